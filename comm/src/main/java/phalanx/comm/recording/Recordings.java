@@ -1,0 +1,72 @@
+package phalanx.comm.recording;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.List;
+import java.util.Optional;
+import java.util.stream.Stream;
+
+/**
+ * Finds the real server recordings in {@code ../shared/recordings} (format in its README) and reads
+ * them. A recording is named by its path prefix: {@code .../S1} stands for {@code S1_perceptors.txt},
+ * {@code S1_effectors.txt}, {@code S1_groundtruth.txt}.
+ */
+public final class Recordings {
+    private Recordings() {}
+
+    /**
+     * The shared folder: system property {@code phalanx.shared}, else environment variable
+     * {@code PHALANX_SHARED}, else {@code ../shared} from the working directory.
+     */
+    public static Path sharedDir() {
+        String p = System.getProperty("phalanx.shared");
+        if (p == null || p.isBlank()) p = System.getenv("PHALANX_SHARED");
+        if (p == null || p.isBlank()) p = "../shared";
+        return Paths.get(p).toAbsolutePath().normalize();
+    }
+
+    /** The recordings folder, if it is there. */
+    public static Optional<Path> dir() {
+        Path d = sharedDir().resolve("recordings");
+        return Files.isDirectory(d) ? Optional.of(d) : Optional.empty();
+    }
+
+    /** The message tests print when they skip because the recordings are missing. */
+    public static String missingMessage() {
+        return "needs the real server recordings in " + sharedDir().resolve("recordings")
+                + " (set -Dphalanx.shared or PHALANX_SHARED); skipped";
+    }
+
+    /** Every {@code *_perceptors.txt} in the recordings folder, as path prefixes, sorted. */
+    public static List<Path> all() throws IOException {
+        Optional<Path> d = dir();
+        if (d.isEmpty()) return List.of();
+        try (Stream<Path> s = Files.list(d.get())) {
+            return s.map(Path::getFileName).map(Path::toString)
+                    .filter(n -> n.endsWith("_perceptors.txt")).sorted()
+                    .map(n -> d.get().resolve(n.substring(0, n.length() - "_perceptors.txt".length())))
+                    .toList();
+        }
+    }
+
+    /** A named recording, e.g. {@code "S4_agent2"}, in the shared folder. */
+    public static Path named(String name) {
+        return sharedDir().resolve("recordings").resolve(name);
+    }
+
+    public static Path perceptorFile(Path prefix) { return sibling(prefix, "_perceptors.txt"); }
+    public static Path effectorFile(Path prefix) { return sibling(prefix, "_effectors.txt"); }
+    public static Path groundTruthFile(Path prefix) { return sibling(prefix, "_groundtruth.txt"); }
+
+    /** The perceptor messages, one per line, exactly as the server sent them. */
+    public static List<String> perceptorMessages(Path prefix) throws IOException {
+        return Files.readAllLines(perceptorFile(prefix), StandardCharsets.ISO_8859_1);
+    }
+
+    private static Path sibling(Path prefix, String suffix) {
+        return prefix.resolveSibling(prefix.getFileName() + suffix);
+    }
+}

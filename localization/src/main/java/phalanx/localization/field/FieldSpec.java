@@ -1,0 +1,62 @@
+package phalanx.localization.field;
+
+import phalanx.comm.perception.Landmark;
+import phalanx.comm.perception.Side;
+import phalanx.comm.perception.Vector3;
+
+/**
+ * The field of one server version (thesis 3.1; DESIGN.md): 0.6.5 had 9 players on 21 x 14 m,
+ * 0.6.6 and later have 11 players on 30 x 20 m. Lengths in metres, the origin at the centre spot,
+ * +x towards the right-hand goal in the field frame.
+ */
+public record FieldSpec(String name, double length, double width, double goalWidth, double goalHeight,
+                        double penaltyDepth, double penaltyWidth, double centreRadius, int players) {
+
+    /** rcssserver3d 0.6.6 and later: the default. */
+    public static final FieldSpec V066 = new FieldSpec("0.6.6+", 30, 20, 2.1, 0.8, 1.8, 3.9, 2.0, 11);
+    /** rcssserver3d 0.6.5, the thesis's server. */
+    public static final FieldSpec V065 = new FieldSpec("0.6.5", 21, 14, 2.1, 0.8, 1.8, 3.9, 1.8, 9);
+
+    public static FieldSpec forPlayers(int players) {
+        if (players == 11) return V066;
+        if (players == 9) return V065;
+        throw new IllegalArgumentException("players must be 9 or 11, got " + players);
+    }
+
+    public double halfLength() { return length / 2; }
+    public double halfWidth() { return width / 2; }
+
+    /**
+     * A landmark in the field frame. Names are absolute for both teams: F1L is always at
+     * (-L/2, W/2, 0), G1L at (-L/2, goalWidth/2, goalHeight) (recordings README, S6).
+     */
+    public Vector3 landmark(Landmark l) {
+        double x = l.name().charAt(2) == 'L' ? -halfLength() : halfLength();
+        boolean one = l.name().charAt(1) == '1';
+        if (l.isGoalPost()) return new Vector3(x, one ? goalWidth / 2 : -goalWidth / 2, goalHeight);
+        return new Vector3(x, one ? halfWidth() : -halfWidth(), 0);
+    }
+
+    /** A landmark in a team's own frame: the field frame for the left team, turned by 180° for the right. */
+    public Vector3 landmark(Landmark l, Side side) {
+        Vector3 p = landmark(l);
+        return side == Side.RIGHT ? new Vector3(-p.x(), -p.y(), p.z()) : p;
+    }
+
+    /** True when the point lies on the field, with an optional margin outside the lines. */
+    public boolean contains(Vector2 p, double margin) {
+        return Math.abs(p.x()) <= halfLength() + margin && Math.abs(p.y()) <= halfWidth() + margin;
+    }
+
+    /** The point moved inside the field, {@code inset} metres from the lines. */
+    public Vector2 clamp(Vector2 p, double inset) {
+        double hx = halfLength() - inset, hy = halfWidth() - inset;
+        return new Vector2(Math.max(-hx, Math.min(hx, p.x())), Math.max(-hy, Math.min(hy, p.y())));
+    }
+
+    /** Centre of the opponent's goal line in the own frame. */
+    public Vector2 opponentGoal() { return new Vector2(halfLength(), 0); }
+
+    /** Centre of the own goal line in the own frame. */
+    public Vector2 ownGoal() { return new Vector2(-halfLength(), 0); }
+}
