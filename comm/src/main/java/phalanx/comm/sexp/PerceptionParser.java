@@ -41,6 +41,8 @@ public final class PerceptionParser {
     private static final double[] POW10 = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10,
             1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
 
+    private static final PlayMode[] PLAY_MODES = PlayMode.values();
+
     private byte[] b;
     private int pos;
     private int end;
@@ -168,8 +170,7 @@ public final class PerceptionParser {
     }
 
     private String playModeName() {
-        PlayMode[] modes = PlayMode.values();
-        for (PlayMode m : modes) {
+        for (PlayMode m : PLAY_MODES) {
             if (m != PlayMode.UNKNOWN && is(m.wireName())) return m.wireName(); // no allocation
         }
         return tokenString();
@@ -226,8 +227,9 @@ public final class PerceptionParser {
             atom();
             if (is("n")) {
                 atom();
-                name = tokenString();
-                foot = FootForce.Foot.fromWire(name);
+                foot = is("lf") ? FootForce.Foot.LEFT : is("rf") ? FootForce.Foot.RIGHT
+                        : is("lf1") ? FootForce.Foot.LEFT_TOE : is("rf1") ? FootForce.Foot.RIGHT_TOE : null;
+                name = foot != null ? foot.wireName() : tokenString();
             } else if (is("c")) {
                 c = vector();
             } else if (is("f")) {

@@ -1,0 +1,74 @@
+package phalanx.agent;
+
+import java.nio.file.Path;
+import java.nio.file.Paths;
+
+/** The player's command line (issue 8). {@link #parse} names the flag at fault. */
+public record PlayerOptions(String host, int port, String team, int unum, int players, int robotType,
+                            Path logDir, long connectTimeoutMillis) {
+
+    public static final String USAGE = """
+            usage: phalanx-player [--host H] [--port P] [--team NAME] [--unum N] [--players 9|11] [--type T] [--log-dir DIR]
+              --host H       server address (default 127.0.0.1)
+              --port P       agent port (default 3100)
+              --team NAME    team name, printable ASCII without spaces or parentheses (default Phalanx)
+              --unum N       uniform number 1-11 (default 0: the server chooses)
+              --players N    team size, 9 (server 0.6.5) or 11 (default 11)
+              --type T       heterogeneous Nao type 0-4 (default 0)
+              --log-dir DIR  directory for this player's log (default: no log file, stderr only)
+              --connect-timeout S  seconds to keep retrying while no server listens (default 30)""";
+
+    public static PlayerOptions defaults() {
+        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000);
+    }
+
+    /** Parses flags; throws IllegalArgumentException whose message names the bad flag and value. */
+    public static PlayerOptions parse(String... args) {
+        PlayerOptions o = defaults();
+        String host = o.host, team = o.team;
+        int port = o.port, unum = o.unum, players = o.players, type = o.robotType;
+        Path logDir = null;
+        long connectMillis = o.connectTimeoutMillis;
+        for (int i = 0; i < args.length; i++) {
+            String flag = args[i];
+            if (flag.equals("-h") || flag.equals("--help")) throw new IllegalArgumentException("help");
+            if (!flag.startsWith("--")) throw new IllegalArgumentException("unexpected argument '" + flag + "'");
+            if (i + 1 >= args.length) throw new IllegalArgumentException(flag + " needs a value");
+            String v = args[++i];
+            switch (flag) {
+                case "--host" -> host = v;
+                case "--port" -> port = intIn(flag, v, 1, 65535);
+                case "--team" -> team = teamName(v);
+                case "--unum" -> unum = intIn(flag, v, 0, 11);
+                case "--players" -> {
+                    players = intIn(flag, v, 9, 11);
+                    if (players == 10) throw new IllegalArgumentException("--players must be 9 or 11, got 10");
+                }
+                case "--type" -> type = intIn(flag, v, 0, 4);
+                case "--log-dir" -> logDir = Paths.get(v);
+                case "--connect-timeout" -> connectMillis = intIn(flag, v, 0, 3600) * 1000L;
+                default -> throw new IllegalArgumentException("unknown flag " + flag);
+            }
+        }
+        if (unum > players) throw new IllegalArgumentException("--unum " + unum + " is more than --players " + players);
+        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis);
+    }
+
+    private static int intIn(String flag, String v, int min, int max) {
+        int n;
+        try {
+            n = Integer.parseInt(v);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(flag + " needs a whole number, got '" + v + "'");
+        }
+        if (n < min || n > max) throw new IllegalArgumentException(flag + " must be " + min + "-" + max + ", got " + n);
+        return n;
+    }
+
+    private static String teamName(String v) {
+        if (v.isEmpty() || v.length() > 16 || !v.chars().allMatch(c -> c > 0x20 && c < 0x7f && c != '(' && c != ')')) {
+            throw new IllegalArgumentException("--team must be 1-16 printable characters without spaces or parentheses, got '" + v + "'");
+        }
+        return v;
+    }
+}

@@ -1,0 +1,54 @@
+package phalanx.agent;
+
+import org.junit.jupiter.api.Test;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+class PlayerOptionsTest {
+
+    @Test
+    void defaultsAndFlags() {
+        PlayerOptions d = PlayerOptions.parse();
+        assertEquals("127.0.0.1", d.host());
+        assertEquals(3100, d.port());
+        assertEquals(11, d.players());
+        PlayerOptions o = PlayerOptions.parse("--host", "localhost", "--port", "3300", "--team", "Kouretes",
+                "--unum", "7", "--players", "9", "--type", "4", "--log-dir", "/tmp/x");
+        assertEquals(3300, o.port());
+        assertEquals(7, o.unum());
+        assertEquals(9, o.players());
+        assertEquals(4, o.robotType());
+        assertEquals("/tmp/x", o.logDir().toString());
+    }
+
+    @Test
+    void everyBadFlagIsNamed() {
+        assertBad("--port needs a whole number, got 'x'", "--port", "x");
+        assertBad("--port must be 1-65535, got 0", "--port", "0");
+        assertBad("--unum must be 0-11, got 12", "--unum", "12");
+        assertBad("--players must be 9 or 11, got 10", "--players", "10");
+        assertBad("--type must be 0-4, got 5", "--type", "5");
+        assertBad("--team must be", "--team", "two words");
+        assertBad("unknown flag --speed", "--speed", "3");
+        assertBad("--host needs a value", "--host");
+        assertBad("unexpected argument 'foo'", "foo");
+        assertBad("--unum 10 is more than --players 9", "--players", "9", "--unum", "10");
+    }
+
+    @Test
+    void playerExitsWithStatus2OnABadFlagAnd3WhenNoServerAnswers() {
+        assertEquals(2, Player.run(new String[]{"--type", "9"}));
+        int port;
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            port = s.getLocalPort();
+        } catch (java.io.IOException e) {
+            throw new AssertionError(e);
+        }
+        assertEquals(3, Player.run(new String[]{"--port", String.valueOf(port), "--connect-timeout", "0"}));
+    }
+
+    private static void assertBad(String expected, String... args) {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> PlayerOptions.parse(args));
+        assertTrue(e.getMessage().contains(expected), "'" + e.getMessage() + "' should contain '" + expected + "'");
+    }
+}
