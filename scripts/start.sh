@@ -1,5 +1,81 @@
 #!/usr/bin/env bash
-# Starts the Phalanx team against rcssserver3d. The player process does not exist yet (issue 8).
-echo "start.sh: the Phalanx player is not written yet; only the foundation (comm, sim-stub) exists." >&2
-echo "start.sh: run scripts/test.sh for the tests, scripts/sim-stub to replay a recording." >&2
-exit 2
+# start.sh [host] [port] [team] [--nine] [--log-dir DIR]
+# Starts the Phalanx team (11 players, or 9 with --nine for server 0.6.5) against rcssserver3d.
+# Installs the build tools if missing and builds first. Players connect one after another, each once
+# the previous one is in the game, so no two robots are created in the same cycle. Each player gets
+# its own log file; PIDs go to DIR/pids for scripts/stop.sh.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+
+host=127.0.0.1; port=3100; team=Phalanx; players=11; logdir=""
+pos=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --nine) players=9 ;;
+    --log-dir) logdir="${2:?--log-dir needs a directory}"; shift ;;
+    -h|--help) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "start.sh: unknown option $1" >&2; exit 2 ;;
+    *) pos+=("$1") ;;
+  esac
+  shift
+done
+[ ${#pos[@]} -ge 1 ] && host="${pos[0]}"
+[ ${#pos[@]} -ge 2 ] && port="${pos[1]}"
+[ ${#pos[@]} -ge 3 ] && team="${pos[2]}"
+[ ${#pos[@]} -ge 4 ] && { echo "start.sh: too many arguments: ${pos[*]}" >&2; exit 2; }
+[[ "$port" =~ ^[0-9]+$ ]] || { echo "start.sh: port must be a number, got '$port'" >&2; exit 2; }
+
+# Is a server listening? Say how to get one if not.
+if ! (exec 3<>"/dev/tcp/$host/$port") 2>/dev/null; then
+  cat >&2 <<MSG
+start.sh: no rcssserver3d is listening on $host:$port.
+  Start one first (rcssserver3d, or rcssserver3d --agent-port $port --server-port M).
+  rcssserver3d is not packaged by Debian/Ubuntu: build it from a SimSpark release
+  (https://gitlab.com/robocup-sim/SimSpark) and put it on PATH; docs/protocol.md lists the
+  spark.rb settings it needs on Debian 12 (Ruby 3).
+MSG
+  exit 3
+fi
+
+"$root/scripts/setup.sh"
+(cd "$root" && gradle -q --console=plain :agent:classpathFile 2>&1 | grep -v -E '^(openjdk version|OpenJDK )' >&2; exit "${PIPESTATUS[0]}") \
+  || { echo "start.sh: build failed" >&2; exit 2; }
+cp="$(cat "$root/agent/build/runtime-classpath.txt")"
+
+# Logs go where the user can write; never $HOME (competitions mount it read-only).
+[ -n "$logdir" ] || logdir="${PHALANX_LOG_DIR:-${TMPDIR:-/tmp}/phalanx-logs}/$team-$(date +%Y%m%d-%H%M%S)"
+mkdir -p "$logdir" || { echo "start.sh: cannot create log directory $logdir" >&2; exit 2; }
+
+# Robot types: the server wants at least 3 types, at most 7 of one, the two most used at most 9
+# together. Types 0, 2 and 4 share the same leg and arm lengths (2: faster ankle pitch, 4: toes),
+# so every motion is tuned on one geometry. Override with PHALANX_TYPES="0 0 2 ...".
+if [ "$players" -eq 11 ]; then default_types="0 0 0 2 2 0 2 0 2 4 4"; else default_types="0 0 2 2 0 2 4 0 4"; fi
+read -r -a types <<< "${PHALANX_TYPES:-$default_types}"
+[ "${#types[@]}" -eq "$players" ] || { echo "start.sh: PHALANX_TYPES needs $players types, got ${#types[@]}" >&2; exit 2; }
+
+# The team channel's per-match key (issue 4): one random key shared by this team's players only.
+export PHALANX_KEY="${PHALANX_KEY:-$(head -c 12 /dev/urandom | od -An -tx1 | tr -d ' \n')}"
+
+# JVM options for 11 JVMs on 2 cores: small fixed heap and the serial collector (short pauses,
+# no GC threads), C1 only (less compile CPU and code cache), no perf data file.
+jvm=(${PHALANX_JVM_OPTS:--Xms32m -Xmx96m -XX:+UseSerialGC -XX:TieredStopAtLevel=1 -XX:ReservedCodeCacheSize=24m -XX:MaxMetaspaceSize=48m -Xss512k -XX:-UsePerfData -Xshare:auto})
+
+: > "$logdir/pids"
+for unum in $(seq 1 "$players"); do
+  out="$logdir/player-$unum.out"
+  nohup java "${jvm[@]}" -cp "$cp" phalanx.agent.Player --host "$host" --port "$port" --team "$team" \
+    --unum "$unum" --players "$players" --type "${types[$((unum-1))]}" --log-dir "$logdir" > "$out" 2>&1 &
+  echo "$!" >> "$logdir/pids"
+  # Wait until this player is in the game (or gone) before the next one connects.
+  for _ in $(seq 1 100); do
+    grep -q "in the game" "$out" "$logdir/player-$team-$unum.log" 2>/dev/null && break
+    kill -0 "$!" 2>/dev/null || break
+    sleep 0.1
+  done
+  if ! kill -0 "$!" 2>/dev/null; then
+    echo "start.sh: player $unum exited at once; its output:" >&2
+    tail -5 "$out" >&2
+  fi
+done
+echo "start.sh: $players players of $team on $host:$port; logs and pids in $logdir"
+echo "start.sh: stop them with scripts/stop.sh $logdir"

@@ -48,6 +48,7 @@ public final class ThinkLoop {
                     connection.send(EffectorMessage.init(options.unum(), options.team()));
                     continue;
                 }
+                if (cycles == 2) LOG.info("in the game as " + options.team() + " " + options.unum());
                 Perception p;
                 try {
                     p = parser.parse(in.buffer(), 0, in.length());
