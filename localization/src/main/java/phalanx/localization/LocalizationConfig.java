@@ -1,0 +1,80 @@
+package phalanx.localization;
+
+/**
+ * Every constant of the localization module, in one place. Thesis values are the defaults and say
+ * where they come from; constants the thesis does not give were chosen here and measured with
+ * {@code scripts/localize-eval} (localization/README.md).
+ *
+ * @param filter               which self-localization filter the belief store runs
+ * @param fifoMaxSize          Algorithm 1's MaxSize (thesis 4.4.3: default 10)
+ * @param selfAgreementMetres  Algorithm 1's "agrees" for self positions; not in the thesis (DESIGN.md, gaps)
+ * @param selfAgreementDeg     the same for the body orientation; not in the thesis
+ * @param ballAgreementMetres  Algorithm 1's "agrees" for the ball (4.4.3 filters the ball too); not in the thesis
+ * @param pairWeighting        how pair fixes are averaged: EQUAL is the thesis's plain mean (4.4.1)
+ * @param fieldMarginMetres    a candidate further outside the lines than this is "way outside" (4.4.1)
+ * @param ekfPositionNoise     EKF process noise per cycle, metres (beyond the thesis, its 7.x future work)
+ * @param ekfAngleNoiseDeg     EKF process noise per cycle, degrees
+ * @param ekfResetFrames       vision frames in a row whose landmarks all fail the gate before the EKF
+ *                             restarts from the triangulation fix (beam, trainer move, kidnapping)
+ * @param trackSetSize         Track Moving Object: observations per set (thesis 4.6: five)
+ * @param trackDelay           Track Moving Object: delay between the two sets, observations (thesis 4.6: five)
+ * @param fusionClusterMetres  team ball fusion cluster threshold (thesis 5.4: 1 m)
+ * @param fusionWeightExponent team ball fusion cluster weight |s|^k (thesis 5.4: k = 3)
+ * @param fallTiltDeg          torso tilt from vertical (accelerometer) that signals a possible fall; not in the thesis
+ * @param fallGyroDegPerSec    gyro rate that signals a possible fall; not in the thesis
+ * @param fallSupportNewtons   total sole-normal foot force under which the feet "do not carry" the robot
+ *                             (thesis 4.6 Stand Up confirms with the foot sensors); standing gives about 45 N
+ * @param fallConfirmCycles    cycles the tilt and the missing support must last before a fall is confirmed
+ * @param accSmoothing         share of the accelerometer mixed into the gyro-integrated tilt per cycle; not in the thesis
+ */
+public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
+                                 double ballAgreementMetres, PairWeighting pairWeighting, double fieldMarginMetres,
+                                 double ekfPositionNoise, double ekfAngleNoiseDeg, int ekfResetFrames,
+                                 int trackSetSize, int trackDelay,
+                                 double fusionClusterMetres, double fusionWeightExponent,
+                                 double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
+                                 int fallConfirmCycles, double accSmoothing) {
+
+    /** The self-localization filters the belief store can run. */
+    public enum Filter { FIFO, EKF }
+
+    /** How the fixes of landmark pairs are averaged. */
+    public enum PairWeighting {
+        /** The thesis's plain mean over the pairs (4.4.1). */
+        EQUAL,
+        /** Each pair weighted by sin² of the angle between its two sight lines: near-parallel pairs count little. */
+        GEOMETRY
+    }
+
+    public static final LocalizationConfig DEFAULT = new LocalizationConfig(
+            Filter.EKF, 10, 0.5, 15, 0.5, PairWeighting.GEOMETRY, 1.0,
+            0.01, 0.5, 3,
+            5, 5,
+            1.0, 3,
+            50, 150, 20, 5, 0.05);
+
+    public LocalizationConfig {
+        if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
+        if (fifoMaxSize < 1) throw new IllegalArgumentException("fifoMaxSize must be at least 1, got " + fifoMaxSize);
+        if (!(selfAgreementMetres > 0) || !(selfAgreementDeg > 0) || !(ballAgreementMetres > 0))
+            throw new IllegalArgumentException("agreement thresholds must be positive");
+        if (trackSetSize < 1 || trackDelay < 1) throw new IllegalArgumentException("track set size and delay must be at least 1");
+        if (!(fusionClusterMetres > 0)) throw new IllegalArgumentException("fusionClusterMetres must be positive");
+        if (!(accSmoothing > 0 && accSmoothing <= 1)) throw new IllegalArgumentException("accSmoothing must be in (0, 1]");
+        if (ekfResetFrames < 1 || fallConfirmCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
+    }
+
+    public LocalizationConfig withFilter(Filter f) {
+        return new LocalizationConfig(f, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, accSmoothing);
+    }
+
+    public LocalizationConfig withPairWeighting(PairWeighting w) {
+        return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, accSmoothing);
+    }
+}

@@ -1,0 +1,257 @@
+package phalanx.localization.belief;
+
+import phalanx.comm.perception.BodyPart;
+import phalanx.comm.perception.GameState;
+import phalanx.comm.perception.Landmark;
+import phalanx.comm.perception.Perception;
+import phalanx.comm.perception.Polar;
+import phalanx.comm.perception.SeenPlayer;
+import phalanx.comm.perception.Side;
+import phalanx.comm.perception.Vector3;
+import phalanx.comm.perception.Vision;
+import phalanx.localization.LocalizationConfig;
+import phalanx.localization.body.CameraPose;
+import phalanx.localization.body.NaoBody;
+import phalanx.localization.body.TiltEstimator;
+import phalanx.localization.fall.FallDetector;
+import phalanx.localization.fall.FallState;
+import phalanx.localization.field.FieldSpec;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+import phalanx.localization.filter.EkfPoseFilter;
+import phalanx.localization.filter.FifoPoseFilter;
+import phalanx.localization.filter.LocalizationFilter;
+import phalanx.localization.filter.PoseFilter;
+import phalanx.localization.tracking.MovingObjectTracker;
+import phalanx.localization.vision.LandmarkSighting;
+import phalanx.localization.vision.SelfLocalizer;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The agent's beliefs (thesis 4.4 and 4.6), updated once per cycle with {@link #update(Perception)}:
+ * the self pose from landmark pairs through the configured filter, the ball and the players seen
+ * (thesis 4.4.2), the ball's motion (Track Moving Object), and the fall state (Stand Up).
+ * The agent may feed its own walk's odometry with {@link #odometry}. Side and uniform number come
+ * from the first GS message unless given. Not thread-safe: one per player, called from its loop.
+ */
+public final class BeliefStore {
+    /** Highest uniform number kept; larger ids are ignored. */
+    private static final int MAX_ID = 22;
+    /** m/s² around 1 g within which the accelerometer's tilt is trusted. */
+    private static final double STEADY_TOLERANCE = 3.0;
+    /** Seconds per server cycle, for the first gyro step. */
+    private static final double CYCLE = 0.02;
+
+    private final FieldSpec field;
+    private final LocalizationConfig config;
+    private final NaoBody body;
+    private final String teamName;
+    private final SelfLocalizer localizer;
+    private final PoseFilter selfFilter;
+    private final LocalizationFilter ballFilter;
+    private final MovingObjectTracker ballTracker;
+    private final FallDetector fallDetector;
+    private final BeliefStats stats = new BeliefStats();
+    private final List<LandmarkSighting> sightings = new ArrayList<>(Landmark.COUNT);
+    private final PlayerBelief[] mates = new PlayerBelief[MAX_ID + 1], others = new PlayerBelief[MAX_ID + 1];
+
+    private Side side;
+    private int unum;
+    private double time = Double.NaN, selfTime = Double.NEGATIVE_INFINITY, ballTime = Double.NEGATIVE_INFINITY;
+    private final TiltEstimator tilt;
+    private double lastTime = Double.NaN;
+    private double odoForward, odoLeft, odoTurn;
+    private Vector2 ballRelative;
+    private List<PlayerBelief> mateList = List.of(), otherList = List.of();
+    private WorldBelief belief;
+
+    /**
+     * @param teamName our team's name as sent in init (to tell teammates from opponents)
+     * @param side     our side, or null to learn it from the first GS message
+     * @param unum     our uniform number, or 0 to learn it from the first GS message
+     */
+    public BeliefStore(FieldSpec field, LocalizationConfig config, NaoBody body, String teamName, Side side, int unum) {
+        this.field = field;
+        this.config = config;
+        this.body = body;
+        this.teamName = teamName == null ? "" : teamName;
+        this.side = side;
+        this.unum = unum;
+        localizer = new SelfLocalizer(field, config);
+        selfFilter = config.filter() == LocalizationConfig.Filter.EKF ? new EkfPoseFilter(config) : new FifoPoseFilter(config);
+        ballFilter = new LocalizationFilter(config.fifoMaxSize(), config.ballAgreementMetres(), Double.NaN);
+        ballTracker = new MovingObjectTracker(config.trackSetSize(), config.trackDelay(), 1.0);
+        fallDetector = new FallDetector(config);
+        tilt = new TiltEstimator(config.accSmoothing(), STEADY_TOLERANCE);
+        belief = snapshot(FallState.STANDING);
+    }
+
+    /**
+     * The agent's own motion since the last call, in its body frame (metres forward and left,
+     * degrees turned counter-clockwise), from the walk's odometry; applied at the next update.
+     */
+    public void odometry(double forward, double left, double turnDeg) {
+        if (!Double.isFinite(forward) || !Double.isFinite(left) || !Double.isFinite(turnDeg)) return;
+        odoForward += forward;
+        odoLeft += left;
+        odoTurn += turnDeg;
+    }
+
+    /** Forgets the self and ball beliefs (for example after the agent was moved by a beam). */
+    public void forgetPose() {
+        selfFilter.reset();
+        ballFilter.clear();
+        ballTracker.clear();
+        selfTime = Double.NEGATIVE_INFINITY;
+    }
+
+    /** One cycle: every perception the server sent, in order. Never throws on odd content. */
+    public WorldBelief update(Perception p) {
+        stats.cycles++;
+        if (p == null) return belief;
+        if (Double.isFinite(p.time())) time = p.time();
+        GameState gs = p.gameState();
+        if (gs != null) {
+            if (gs.side() != null) side = gs.side();
+            if (gs.unum() > 0 && unum == 0) unum = gs.unum();
+        }
+        FallState fall = fallDetector.update(p.acc(), p.gyro(), p.footForces());
+        double dt = Double.isFinite(lastTime) && Double.isFinite(p.time()) ? p.time() - lastTime : CYCLE;
+        lastTime = p.time();
+        tilt.update(p.gyro(), p.acc(), dt);
+
+        selfFilter.predict(odoForward, odoLeft, odoTurn);
+        if (ballRelative != null && (odoForward != 0 || odoLeft != 0 || odoTurn != 0))
+            ballRelative = ballRelative.minus(new Vector2(odoForward, odoLeft)).rotate(-odoTurn);
+        odoForward = odoLeft = odoTurn = 0;
+
+        if (p.hasVision()) see(p, fall);
+        else stats.noVision++;
+        belief = snapshot(fall);
+        return belief;
+    }
+
+    public WorldBelief belief() { return belief; }
+
+    public BeliefStats stats() { return stats; }
+
+    /** The accelerometer reads about 1 g: the robot is not being thrown about. */
+    private static boolean isSteady(Vector3 a) {
+        if (a == null || !a.isFinite()) return true;     // no reading: trust the joints alone
+        double n = a.norm();
+        if (n < 1.0) return true;                         // no gravity reading yet (first messages)
+        return n > 9.81 - STEADY_TOLERANCE && n < 9.81 + STEADY_TOLERANCE;
+    }
+
+    private void see(Perception p, FallState fall) {
+        stats.visionFrames++;
+        Vision v = p.vision();
+        CameraPose camera = CameraPose.of(body, p.joints(), tilt.up());
+        sightings.clear();
+        for (int i = 0; i < Landmark.COUNT; i++) {
+            Polar pol = v.landmarks()[i];
+            if (pol == null) continue;
+            if (!pol.isUsable()) { stats.badPolar++; continue; }
+            if (side == null) continue;
+            Landmark l = Landmark.byIndex(i);
+            Vector3 rel = camera.toBody(pol);
+            Vector3 at = field.landmark(l, side);
+            sightings.add(new LandmarkSighting(l, new Vector2(at.x(), at.y()), new Vector2(rel.x(), rel.y())));
+        }
+        if (side == null) stats.noSide++;
+        else if (sightings.isEmpty()) stats.noLandmark++;
+        else if (sightings.size() == 1) stats.oneLandmark++;
+
+        // Lying or falling, or the accelerometer reading more than gravity: the tilt, hence the
+        // camera pose, is unknown, and a fix would be wrong by metres (S3). Keep the old belief.
+        boolean steady = fall == FallState.STANDING && isSteady(p.acc());
+        if (!steady) {
+            stats.fallenFrames++;
+        } else if (side != null) {
+            Pose2 fix = localizer.locate(sightings);
+            if (fix != null) stats.selfFixes++;
+            Pose2 before = selfFilter.pose();
+            if (selfFilter.update(fix, sightings)) {
+                stats.selfUpdates++;
+                selfTime = time;
+                Pose2 after = selfFilter.pose();
+                // The filter restarted somewhere else (beam, trainer move): ball positions placed
+                // with the old pose are wrong by the same jump.
+                if (before != null && after != null
+                        && before.position().distanceTo(after.position()) > config.selfAgreementMetres()) {
+                    ballFilter.clear();
+                    ballTracker.clear();
+                }
+            }
+        }
+        Pose2 self = selfFilter.pose();
+
+        Polar ball = v.ball();
+        if (ball != null) {
+            if (!ball.isUsable()) stats.badPolar++;
+            else {
+                Vector3 r = camera.toBody(ball);
+                ballRelative = new Vector2(r.x(), r.y());
+                ballTime = time;
+                if (self != null && steady) {
+                    Vector2 g = self.toGlobal(ballRelative);
+                    ballFilter.add(g);
+                    ballTracker.observe(g, time);
+                }
+            }
+        }
+        boolean changed = false;
+        for (SeenPlayer sp : v.players()) changed |= seePlayer(sp, camera, self);
+        if (changed) {
+            mateList = collect(mates);
+            otherList = collect(others);
+        }
+    }
+
+    private boolean seePlayer(SeenPlayer sp, CameraPose camera, Pose2 self) {
+        if (sp.id() <= 0 || sp.id() > MAX_ID) { stats.playerWithoutId++; return false; }
+        boolean mate = teamName.equals(sp.team());
+        if (mate && sp.id() == unum) return false;      // the agent sees its own lower arms
+        Vector2[] rel = new Vector2[BodyPart.COUNT];
+        Vector2[] glob = self == null ? null : new Vector2[BodyPart.COUNT];
+        double sx = 0, sy = 0;
+        int n = 0;
+        for (int i = 0; i < BodyPart.COUNT; i++) {
+            Polar pol = sp.parts()[i];
+            if (pol == null) continue;
+            if (!pol.isUsable()) { stats.badPolar++; continue; }
+            Vector3 r = camera.toBody(pol);
+            rel[i] = new Vector2(r.x(), r.y());
+            if (glob != null) glob[i] = self.toGlobal(rel[i]);
+            sx += r.x();
+            sy += r.y();
+            n++;
+        }
+        if (n == 0) return false;
+        Vector2 head = rel[BodyPart.HEAD.ordinal()];
+        Vector2 where = head != null ? head : new Vector2(sx / n, sy / n);
+        PlayerBelief b = new PlayerBelief(sp.team(), sp.id(), time, where, self == null ? null : self.toGlobal(where), rel, glob);
+        (mate ? mates : others)[sp.id()] = b;
+        return true;
+    }
+
+    private static List<PlayerBelief> collect(PlayerBelief[] byId) {
+        List<PlayerBelief> l = new ArrayList<>();
+        for (PlayerBelief b : byId) if (b != null) l.add(b);
+        return List.copyOf(l);
+    }
+
+    private WorldBelief snapshot(FallState fall) {
+        Pose2 self = selfFilter.pose();
+        Vector2 ballGlobal = self == null ? null : ballFilter.position();
+        Vector2 rel = ballRelative;
+        // With a self belief the filtered ball is the better relative estimate too.
+        if (ballGlobal != null) rel = self.toRelative(ballGlobal);
+        double now = Double.isNaN(time) ? 0 : time;
+        return new WorldBelief(time, side, unum, self, selfFilter.confidence(), now - selfTime,
+                rel, ballGlobal, now - ballTime, ballGlobal == null ? null : ballTracker.velocity(),
+                mateList, otherList, fall);
+    }
+}

@@ -1,0 +1,61 @@
+package phalanx.localization.fall;
+
+import phalanx.comm.perception.FootForce;
+import phalanx.comm.perception.Vector3;
+import phalanx.localization.LocalizationConfig;
+
+import java.util.List;
+
+/**
+ * Thesis 4.6 Stand Up's fall detection: gyro or accelerometer beyond a threshold says "possibly
+ * falling"; the fall is confirmed when the torso stays tilted and the force perceptors under the
+ * feet do not carry the robot (their sole-normal forces add up to less than a threshold; a robot
+ * lying on its back still touches the ground with its heels, sideways to the soles).
+ * One call per cycle; no allocation.
+ */
+public final class FallDetector {
+    private final double cosTilt, gyroLimit, support;
+    private final int confirmCycles;
+    private FallState state = FallState.STANDING;
+    private int downCycles;
+
+    public FallDetector(LocalizationConfig c) {
+        cosTilt = Math.cos(Math.toRadians(c.fallTiltDeg()));
+        gyroLimit = c.fallGyroDegPerSec();
+        support = c.fallSupportNewtons();
+        confirmCycles = c.fallConfirmCycles();
+    }
+
+    /**
+     * @param acc   accelerometer, server torso frame (+x right, +y forward, +z up), m/s²; null keeps the state
+     * @param gyro  gyro rates, °/s; may be null
+     * @param feet  this cycle's force perceptors (absent ones are not touching)
+     */
+    public FallState update(Vector3 acc, Vector3 gyro, List<FootForce> feet) {
+        if (acc == null || !acc.isFinite()) return state;
+        double n = acc.norm();
+        if (n < 1.0) return state;                       // no gravity reading yet (first messages)
+        boolean tilted = acc.z() / n < cosTilt;
+        boolean spinning = gyro != null && gyro.isFinite()
+                && Math.max(Math.abs(gyro.x()), Math.abs(gyro.y())) > gyroLimit;
+        double carried = 0;
+        if (feet != null) {
+            for (int i = 0; i < feet.size(); i++) {
+                Vector3 f = feet.get(i).force();
+                if (f != null && f.isFinite() && f.z() > 0) carried += f.z();
+            }
+        }
+        if (tilted && carried < support) {
+            if (++downCycles >= confirmCycles) {
+                state = acc.y() >= 0 ? FallState.FALLEN_BACK : FallState.FALLEN_FRONT;
+                return state;
+            }
+        } else {
+            downCycles = 0;
+        }
+        state = tilted || spinning ? FallState.FALLING : FallState.STANDING;
+        return state;
+    }
+
+    public FallState state() { return state; }
+}

@@ -1,0 +1,88 @@
+package phalanx.localization.vision;
+
+import phalanx.localization.LocalizationConfig;
+import phalanx.localization.field.Angles;
+import phalanx.localization.field.FieldSpec;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+import java.util.List;
+
+/**
+ * Thesis 4.4.1, self-localization by landmark pairs: for every pair of visible landmarks, intersect
+ * the two circles centred on the landmarks (radius = the seen ground distance), keep the candidate
+ * whose landmark bearings agree and that lies on the field, derive the body orientation from the
+ * bearings, and average over the pairs. Fewer than two landmarks: no fix (null).
+ */
+public final class SelfLocalizer {
+    private final FieldSpec field;
+    private final LocalizationConfig config;
+
+    public SelfLocalizer(FieldSpec field, LocalizationConfig config) {
+        this.field = field;
+        this.config = config;
+    }
+
+    /** The averaged fix from every usable pair, or null when no pair gives one. */
+    public Pose2 locate(List<LandmarkSighting> seen) {
+        int n = seen.size();
+        if (n < 2) return null;
+        double sw = 0, sx = 0, sy = 0, sc = 0, ss = 0;
+        for (int i = 0; i < n; i++) {
+            for (int j = i + 1; j < n; j++) {
+                LandmarkSighting a = seen.get(i), b = seen.get(j);
+                Pose2 p = pair(a, b);
+                if (p == null) continue;
+                double w = 1;
+                if (config.pairWeighting() == LocalizationConfig.PairWeighting.GEOMETRY) {
+                    // Error of a circle intersection grows as 1/sin(angle between the sight lines).
+                    double sin = Math.abs(a.relative().cross(b.relative())) / (a.relative().norm() * b.relative().norm());
+                    w = sin * sin + 1e-6;
+                }
+                sw += w;
+                sx += w * p.x();
+                sy += w * p.y();
+                double t = Math.toRadians(p.thetaDeg());
+                sc += w * Math.cos(t);
+                ss += w * Math.sin(t);
+            }
+        }
+        if (sw == 0) return null;
+        return new Pose2(sx / sw, sy / sw, Math.toDegrees(Math.atan2(ss, sc)));
+    }
+
+    /** The fix from one pair, or null when the circles do not meet or no candidate fits. */
+    public Pose2 pair(LandmarkSighting a, LandmarkSighting b) {
+        Vector2 pa = a.position(), pb = b.position();
+        double ra = a.relative().norm(), rb = b.relative().norm();
+        double d = pa.distanceTo(pb);
+        if (d < 1e-6 || !(ra > 0) || !(rb > 0)) return null;
+        double along = (ra * ra - rb * rb + d * d) / (2 * d);
+        double h2 = ra * ra - along * along;
+        // Noise can pull two nearly tangent circles apart: accept a small gap, reject a real one.
+        if (h2 < 0) {
+            if (h2 < -0.04 * ra * ra) return null;
+            h2 = 0;
+        }
+        double h = Math.sqrt(h2);
+        double ux = (pb.x() - pa.x()) / d, uy = (pb.y() - pa.y()) / d;
+        double mx = pa.x() + along * ux, my = pa.y() + along * uy;
+        Pose2 best = null;
+        double bestErr = Double.POSITIVE_INFINITY;
+        for (int sign = -1; sign <= 1; sign += 2) {
+            Vector2 c = new Vector2(mx - sign * h * uy, my + sign * h * ux);
+            if (!field.contains(c, config.fieldMarginMetres())) continue;
+            // Body orientation that makes each landmark appear at its seen bearing.
+            double ta = Angles.normalize(pa.minus(c).angleDeg() - a.relative().angleDeg());
+            double tb = Angles.normalize(pb.minus(c).angleDeg() - b.relative().angleDeg());
+            double err = Math.abs(Angles.difference(ta, tb));
+            if (err < bestErr) {
+                bestErr = err;
+                best = new Pose2(c.x(), c.y(), Angles.normalize(tb + Angles.difference(ta, tb) / 2));
+            }
+            if (h == 0) break;
+        }
+        // The right candidate sees both landmarks at their seen bearings; a mirror image does not.
+        return bestErr <= 20 ? best : null;
+    }
+}

@@ -1,0 +1,144 @@
+package phalanx.localization.belief;
+
+import org.junit.jupiter.api.Test;
+import phalanx.comm.perception.BodyPart;
+import phalanx.comm.perception.Landmark;
+import phalanx.comm.perception.Perception;
+import phalanx.comm.perception.Polar;
+import phalanx.comm.perception.SeenPlayer;
+import phalanx.comm.perception.Side;
+import phalanx.comm.sexp.PerceptionParser;
+import phalanx.localization.LocalizationConfig;
+import phalanx.localization.Scenes;
+import phalanx.localization.body.NaoBody;
+import phalanx.localization.fall.FallState;
+import phalanx.localization.field.FieldSpec;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+class BeliefStoreTest {
+    private final FieldSpec field = FieldSpec.V066;
+    private static final Landmark[] RIGHT_END = {Landmark.F1R, Landmark.G1R, Landmark.G2R, Landmark.F2R};
+
+    private BeliefStore store(LocalizationConfig.Filter f) {
+        return new BeliefStore(field, LocalizationConfig.DEFAULT.withFilter(f), NaoBody.ofType(0), "Us", null, 0);
+    }
+
+    private Perception frame(double t, Pose2 truth, Side side, Landmark... seen) {
+        return Scenes.perception(t, Scenes.vision(Scenes.landmarks(field, side, truth, seen),
+                Scenes.polar(truth, 0, 0, 0.042), List.of()));
+    }
+
+    @Test
+    void locatesItselfAndTheBallFromExactViews() {
+        for (LocalizationConfig.Filter f : LocalizationConfig.Filter.values()) {
+            BeliefStore s = store(f);
+            s.update(Scenes.gameState(0, 3, Side.LEFT));
+            Pose2 truth = new Pose2(-5, 2, 7);
+            WorldBelief b = null;
+            for (int i = 1; i <= 10; i++) b = s.update(frame(i * 0.06, truth, Side.LEFT, RIGHT_END));
+            assertEquals(-5, b.self().x(), 0.005, f.name());
+            assertEquals(2, b.self().y(), 0.005, f.name());
+            assertEquals(7, b.self().thetaDeg(), 0.1, f.name());
+            assertEquals(0, b.ballGlobal().norm(), 0.01, f.name());
+            assertEquals(truth.toRelative(Vector2.ZERO).x(), b.ballRelative().x(), 0.01);
+            assertEquals(0, b.ballVelocity().norm(), 1e-6, "a still ball, ten sightings");
+            assertEquals(Side.LEFT, b.side());
+            assertEquals(3, b.unum());
+            assertEquals(0, b.selfAge(), 1e-9);
+            assertEquals(FallState.STANDING, b.fall());
+        }
+    }
+
+    @Test
+    void rightSideBeliefsAreInTheTeamsOwnFrame() {
+        BeliefStore s = store(LocalizationConfig.Filter.FIFO);
+        s.update(Scenes.gameState(0, 1, Side.RIGHT));
+        // S6: field (10, 4) facing -150° is own (-10, -4) facing 30°; the landmarks ahead are F1L, G1L, G2L.
+        Pose2 own = new Pose2(-10, -4, 30);
+        WorldBelief b = s.update(frame(0.06, own, Side.RIGHT, Landmark.F1L, Landmark.G1L, Landmark.G2L));
+        assertEquals(-10, b.self().x(), 0.005);
+        assertEquals(-4, b.self().y(), 0.005);
+        assertEquals(30, b.self().thetaDeg(), 0.1);
+    }
+
+    /** Bad input: no update, no exception, counted. */
+    @Test
+    void badInputIsCountedAndChangesNothing() throws Exception {
+        BeliefStore s = store(LocalizationConfig.Filter.EKF);
+        s.update(Scenes.gameState(0, 2, Side.LEFT));
+        Pose2 truth = new Pose2(0, 0, 0);
+        s.update(Scenes.perception(0.02, null));                                    // no vision
+        s.update(Scenes.perception(0.04, Scenes.vision(Scenes.landmarks(field, Side.LEFT, truth), null, List.of())));
+        s.update(Scenes.perception(0.06, Scenes.vision(Scenes.landmarks(field, Side.LEFT, truth, Landmark.G1R), null, List.of())));
+        Polar[] bad = Scenes.landmarks(field, Side.LEFT, truth, Landmark.G1R);
+        bad[Landmark.G2R.ordinal()] = new Polar(0, 1, 1);
+        bad[Landmark.F1R.ordinal()] = new Polar(Double.NaN, 1, 1);
+        bad[Landmark.F2R.ordinal()] = new Polar(-3, 1, 1);
+        Polar[] parts = new Polar[BodyPart.COUNT];
+        parts[BodyPart.HEAD.ordinal()] = new Polar(2, 0, 0);
+        SeenPlayer noId = new SeenPlayer("Them", 0, parts);
+        WorldBelief b = s.update(Scenes.perception(0.08, Scenes.vision(bad, new Polar(1, Double.NaN, 0), List.of(noId))));
+        assertNull(b.self(), "nothing here makes a fix");
+        assertNull(b.ballRelative());
+        assertTrue(b.opponents().isEmpty());
+        BeliefStats st = s.stats();
+        assertEquals(1 + 1, st.noVision(), "the GS message and the blind cycle");
+        assertEquals(1, st.noLandmark());
+        assertEquals(2, st.oneLandmark(), "G1R alone, and G1R beside three bad ones");
+        assertEquals(4, st.badPolar(), "distance 0, NaN, negative and the NaN ball angle");
+        assertEquals(1, st.playerWithoutId());
+        assertEquals(0, st.selfFixes());
+        // A landmark name the server does not have: the parser drops it, the store sees one landmark.
+        Perception unknown = new PerceptionParser().parse("(time (now 0.10))(See (F3L (pol 10 0 0)) (G1R (pol 15.0 4.0 -1.0)))");
+        assertNull(s.update(unknown).self());
+        assertEquals(3, st.oneLandmark());
+        assertNull(s.update(null).self());
+    }
+
+    @Test
+    void seesTeammatesAndOpponentsButNotItsOwnArms() {
+        BeliefStore s = store(LocalizationConfig.Filter.EKF);
+        s.update(Scenes.gameState(0, 4, Side.LEFT));
+        Pose2 truth = new Pose2(-5, 2, 0);
+        Polar[] own = new Polar[BodyPart.COUNT];
+        own[BodyPart.RIGHT_LOWER_ARM.ordinal()] = new Polar(0.18, -34, -24);
+        Polar[] mate = new Polar[BodyPart.COUNT];
+        mate[BodyPart.HEAD.ordinal()] = Scenes.polar(truth, -3, 2, 0.5);
+        Polar[] foe = new Polar[BodyPart.COUNT];
+        foe[BodyPart.LEFT_FOOT.ordinal()] = Scenes.polar(truth, -5, 5, 0.0);
+        foe[BodyPart.RIGHT_FOOT.ordinal()] = Scenes.polar(truth, -5, 5.2, 0.0);
+        List<SeenPlayer> players = List.of(new SeenPlayer("Us", 4, own), new SeenPlayer("Us", 7, mate), new SeenPlayer("Them", 9, foe));
+        WorldBelief b = s.update(Scenes.perception(0.06, Scenes.vision(Scenes.landmarks(field, Side.LEFT, truth, RIGHT_END), null, players)));
+        assertEquals(1, b.teammates().size());
+        PlayerBelief m = b.teammates().get(0);
+        assertEquals(7, m.id());
+        assertEquals(-3, m.global().x(), 0.01);
+        assertEquals(2, m.global().y(), 0.01);
+        PlayerBelief o = b.opponents().get(0);
+        assertEquals(9, o.id());
+        assertEquals(5.1, o.global().y(), 0.01, "no head seen: the mean of the feet");
+        assertEquals(5.2, o.partGlobal(BodyPart.RIGHT_FOOT).y(), 0.01);
+        assertNull(o.partGlobal(BodyPart.HEAD));
+    }
+
+    @Test
+    void withoutSelfFixObjectsStayRelativeAndOdometryMovesThem() {
+        BeliefStore s = store(LocalizationConfig.Filter.FIFO);
+        s.update(Scenes.gameState(0, 2, Side.LEFT));
+        Pose2 truth = new Pose2(0, 0, 0);
+        WorldBelief b = s.update(Scenes.perception(0.06, Scenes.vision(Scenes.landmarks(field, Side.LEFT, truth),
+                Scenes.polar(truth, 2, 1, 0.042), List.of())));
+        assertNull(b.ballGlobal());
+        assertEquals(2, b.ballRelative().x(), 0.01);
+        assertEquals(1, b.ballRelative().y(), 0.01);
+        s.odometry(0.5, 0, 0);
+        b = s.update(Scenes.perception(0.08, null));
+        assertEquals(1.5, b.ballRelative().x(), 0.01, "walked half a metre towards it");
+        assertEquals(0.02, b.ballAge(), 1e-9);
+    }
+}

@@ -1,0 +1,87 @@
+package phalanx.localization.fall;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import phalanx.comm.perception.FootForce;
+import phalanx.comm.perception.Perception;
+import phalanx.comm.perception.Vector3;
+import phalanx.comm.recording.Recordings;
+import phalanx.comm.sexp.PerceptionParser;
+import phalanx.localization.LocalizationConfig;
+import phalanx.localization.Scenes;
+import phalanx.localization.eval.GroundTruth;
+
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+class FallDetectorTest {
+
+    @Test
+    void lyingFaceDownWithoutFootSupportIsAFrontFallAfterTheConfirmation() {
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        Vector3 prone = new Vector3(0, -9.81, 0.1);
+        for (int i = 1; i < LocalizationConfig.DEFAULT.fallConfirmCycles(); i++)
+            assertEquals(FallState.FALLING, d.update(prone, Vector3.ZERO, List.of()), "cycle " + i + ": not confirmed yet");
+        assertEquals(FallState.FALLEN_FRONT, d.update(prone, Vector3.ZERO, List.of()));
+    }
+
+    @Test
+    void tiltWhileTheFeetCarryTheRobotIsNoFall() {
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        Vector3 leaning = new Vector3(0, 8, 5.7);         // 55° tilt, as in a collision
+        for (int i = 0; i < 20; i++) assertEquals(FallState.FALLING, d.update(leaning, Vector3.ZERO, Scenes.standingFeet()));
+        assertEquals(FallState.STANDING, d.update(Scenes.UPRIGHT, Vector3.ZERO, Scenes.standingFeet()));
+    }
+
+    @Test
+    void fastRotationAloneIsAPossibleFall() {
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        assertEquals(FallState.FALLING, d.update(Scenes.UPRIGHT, new Vector3(200, 0, 0), Scenes.standingFeet()));
+        assertEquals(FallState.STANDING, d.update(Scenes.UPRIGHT, Vector3.ZERO, Scenes.standingFeet()));
+    }
+
+    @Test
+    void missingReadingsKeepTheState() {
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        assertEquals(FallState.STANDING, d.update(null, null, null));
+        assertEquals(FallState.STANDING, d.update(new Vector3(Double.NaN, 0, 0), null, null));
+        assertEquals(FallState.STANDING, d.update(Vector3.ZERO, null, List.of(new FootForce(FootForce.Foot.LEFT, Vector3.ZERO, Vector3.ZERO))));
+    }
+
+    /** S3 (needs ../shared/recordings): falls on its back at now 2.1-2.6 s and then lies still. */
+    @Test
+    void recordedBackFallIsDetectedAndStandingRecordingsNeverFall() throws Exception {
+        assumeTrue(Recordings.dir().isPresent(), Recordings.missingMessage());
+        Path s3 = Recordings.named("S3");
+        List<String> lines = Recordings.perceptorMessages(s3);
+        List<GroundTruth.Line> truth = GroundTruth.read(Recordings.groundTruthFile(s3));
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        PerceptionParser parser = new PerceptionParser();
+        int firstLying = -1, firstDetected = -1;
+        for (int i = 0; i < lines.size(); i++) {
+            Perception p = parser.parse(lines.get(i));
+            FallState s = d.update(p.acc(), p.gyro(), p.footForces());
+            GroundTruth.Line g = truth.get(i);
+            boolean lying = g.hasTorso() && g.upright() < 0.2;          // torso within ~12° of horizontal
+            if (lying && firstLying < 0) firstLying = i;
+            if (s.isDown() && firstDetected < 0) firstDetected = i;
+            if (g.hasTorso() && g.upright() > 0.95) assertFalse(s.isDown(), "line " + (i + 1) + ": upright but reported down");
+            if (i > firstLying + 30 && firstLying >= 0) assertEquals(FallState.FALLEN_BACK, s, "line " + (i + 1));
+        }
+        assertTrue(firstLying > 0);
+        assertTrue(firstDetected >= 0 && firstDetected - firstLying <= 20,
+                "detected " + (firstDetected - firstLying) + " cycles after the torso lay flat");
+        for (String name : new String[] {"S1", "S2", "S4_agent1", "S4_agent2", "S5_agent1", "S5_agent7", "S6"}) {
+            FallDetector s = new FallDetector(LocalizationConfig.DEFAULT);
+            int line = 0;
+            for (String m : Recordings.perceptorMessages(Recordings.named(name))) {
+                line++;
+                Perception p = parser.parse(m);
+                assertFalse(s.update(p.acc(), p.gyro(), p.footForces()).isDown(), name + " line " + line);
+            }
+        }
+    }
+}

@@ -1,0 +1,83 @@
+package phalanx.localization.filter;
+
+import org.junit.jupiter.api.Test;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** Thesis 4.4.3, Algorithm 1, step by step. */
+class LocalizationFilterTest {
+
+    @Test
+    void firstEstimateIsTakenAndAgreeingOnesAreAveraged() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15);
+        assertNull(f.pose());
+        assertTrue(f.add(new Pose2(1, 1, 10)));
+        assertTrue(f.add(new Pose2(1.2, 1, 20)));
+        Pose2 p = f.pose();
+        assertEquals(1.1, p.x(), 1e-9);
+        assertEquals(1, p.y(), 1e-9);
+        assertEquals(15, p.thetaDeg(), 1e-9);
+    }
+
+    @Test
+    void anOutlierIsIgnoredAndRemovesTheOldestEntry() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15);
+        f.add(new Vector2(0, 0));
+        f.add(new Vector2(0.2, 0));
+        f.add(new Vector2(0.4, 0));
+        assertFalse(f.add(new Vector2(5, 5)));
+        assertEquals(2, f.size());
+        assertEquals(0.3, f.position().x(), 1e-9, "the oldest (0, 0) went, the outlier was not added");
+        assertEquals(1, f.rejected());
+    }
+
+    @Test
+    void orientationCountsForPosesAcrossTheSeam() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15);
+        f.add(new Pose2(0, 0, 175));
+        assertTrue(f.add(new Pose2(0, 0, -175)), "175° and -175° are 10° apart");
+        assertEquals(180, Math.abs(f.pose().thetaDeg()), 1e-9);
+        assertFalse(f.add(new Pose2(0, 0, 150)), "same place, 30° off: disagrees");
+    }
+
+    @Test
+    void aPersistentNewLocationReplacesTheBelief() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15);
+        for (int i = 0; i < 10; i++) f.add(new Vector2(0, 0));
+        assertEquals(10, f.size());
+        // The robot was moved: ten disagreeing estimates empty the queue, the eleventh starts a new belief.
+        for (int i = 0; i < 10; i++) assertFalse(f.add(new Vector2(4, 0)));
+        assertTrue(f.isEmpty());
+        assertTrue(f.add(new Vector2(4, 0)));
+        assertEquals(4, f.position().x(), 1e-9);
+    }
+
+    @Test
+    void queueKeepsTheMaxSizeMostRecent() {
+        LocalizationFilter f = new LocalizationFilter(3, 10, 15);
+        for (int i = 1; i <= 5; i++) f.add(new Vector2(i, 0));
+        assertEquals(3, f.size());
+        assertEquals(4, f.position().x(), 1e-9, "mean of 3, 4, 5");
+    }
+
+    @Test
+    void odometryShiftMovesQueuedPosesInTheirOwnFrame() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15);
+        f.add(new Pose2(1, 1, 90));
+        f.shift(0.5, 0, 10);      // half a metre forward (= +y when facing 90°), turned 10°
+        Pose2 p = f.pose();
+        assertEquals(1, p.x(), 1e-9);
+        assertEquals(1.5, p.y(), 1e-9);
+        assertEquals(100, p.thetaDeg(), 1e-9);
+    }
+
+    @Test
+    void nonFiniteEstimatesAreIgnored() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15);
+        assertFalse(f.add(new Vector2(Double.NaN, 0)));
+        assertFalse(f.add(new Pose2(0, 0, Double.POSITIVE_INFINITY)));
+        assertTrue(f.isEmpty());
+    }
+}
