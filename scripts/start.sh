@@ -54,7 +54,7 @@ read -r -a types <<< "${PHALANX_TYPES:-$default_types}"
 [ "${#types[@]}" -eq "$players" ] || { echo "start.sh: PHALANX_TYPES needs $players types, got ${#types[@]}" >&2; exit 2; }
 
 # The team channel's per-match key (issue 4): one random key shared by this team's players only.
-export PHALANX_KEY="${PHALANX_KEY:-$(head -c 12 /dev/urandom | od -An -tx1 | tr -d ' \n')}"
+export PHALANX_TEAM_KEY="${PHALANX_TEAM_KEY:-$(head -c 12 /dev/urandom | od -An -tx1 | tr -d ' \n')}"
 
 # JVM options for 11 JVMs on 2 cores: small fixed heap and the serial collector (short pauses,
 # no GC threads), C1 only (less compile CPU and code cache), no perf data file.
