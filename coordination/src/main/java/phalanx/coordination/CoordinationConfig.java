@@ -99,11 +99,11 @@ public record CoordinationConfig(int goalkeeperId, int activeCount,
      * @param forwardMinX       no forward stands below this x ("close to the middle of the field")
      * @param wingBase          FL/FR distance from FC near the middle; grows by {@code wingGrowth} ...
      * @param wingGrowth        ... times the ball's progress (0 at our goal line, 1 at theirs)
-     * @param wingAngle         FL/FR bearing from FC, degrees off the FC-to-opponent-goal direction
+     * @param wingAngle         FL/FR bearing from FC, degrees from +x, before the turn towards their goal
      * @param supportBehind     11 players: FS this far behind FC, MC this far behind FS
      * @param midfieldAhead     9 players, ball in our half: ML/MR this far ahead of DC
      * @param midfieldSpread    ML/MR this far either side of their centre
-     * @param midfieldAngle     11 players: ML/MR bearing from MC, degrees off the MC-to-opponent-goal direction
+     * @param midfieldAngle     11 players: ML/MR bearing from MC, degrees from +x, before the turn towards their goal
      * @param midfieldBehindForwards 9 players, ball in their half: ML/MR this far behind FC
      * @param goalkeeperDepth   GK this far in front of our goal line
      * @param inset             every formation position stays this far inside the lines

@@ -15,7 +15,8 @@ import phalanx.localization.field.Vector2;
 public record TeamBeliefs(FieldSpec field, List<PlayerReport> reports, Vector2 fallbackBall) {
     public TeamBeliefs {
         if (field == null) throw new IllegalArgumentException("field is null");
-        reports = reports == null ? List.of() : List.copyOf(reports);
+        // Copied as is, nulls included: the update drops them with a message rather than throwing here.
+        reports = reports == null ? List.of() : java.util.Collections.unmodifiableList(new java.util.ArrayList<>(reports));
     }
 
     public TeamBeliefs(FieldSpec field, List<PlayerReport> reports) { this(field, reports, null); }
