@@ -8,17 +8,32 @@ import java.util.Arrays;
  * First the bottleneck: the smallest distance T such that every player can be matched to a position no
  * farther than T (binary search over the n² distances, each step a bipartite matching, O(n³ log n)).
  * Then, among the mappings that use no longer edge, the one with the least sum of squared distances
- * (Hungarian algorithm, O(n³)). Minimising squared distances uncrosses routes: two crossing routes can
- * always be swapped for a smaller sum of squares, which is how SCRAM avoids collisions by construction
- * instead of scoring them. It ignores {@link SupportCost}'s collision feature; the cost it reports is
- * the thesis's cost of the mapping it picks, for comparison.
+ * (Hungarian algorithm, O(n³)). SCRAM's guarantee is about time, not geometry: players that set off
+ * together at the same speed on these routes never reach a crossing point together, so routes may cross
+ * but players do not meet (the paper proves it for its assignments). It ignores {@link SupportCost}'s
+ * collision feature; the cost it reports is the thesis's cost of the mapping it picks, for comparison.
+ * The bottleneck step is here a threshold on the plain MSD² problem, not the paper's recursive
+ * refinement, so the second-longest distance and below are only minimised through the sum of squares.
  */
 public final class ScramSupportMapper implements SupportMapper {
+    private final boolean minimalMakespan;
+
+    /** MMD+MSD²: the least longest distance first, then the least sum of squares. */
+    public ScramSupportMapper() { this(true); }
+
+    /** @param minimalMakespan false for plain MSD² (least sum of squared distances, no bottleneck step) */
+    public ScramSupportMapper(boolean minimalMakespan) { this.minimalMakespan = minimalMakespan; }
 
     @Override
     public SupportMapping map(SupportCost cost) {
         int n = cost.size();
         if (n == 0) return new SupportMapping(new int[0], 0, 0);
+        if (!minimalMakespan) {
+            double[][] w = new double[n][n];
+            for (int a = 0; a < n; a++) for (int p = 0; p < n; p++) w[a][p] = cost.distance(a, p) * cost.distance(a, p);
+            int[] positionOf = hungarian(w);
+            return new SupportMapping(positionOf, cost.total(positionOf), 0);
+        }
         double[] sorted = new double[n * n];
         for (int a = 0; a < n; a++) for (int p = 0; p < n; p++) sorted[a * n + p] = cost.distance(a, p);
         Arrays.sort(sorted);
