@@ -82,7 +82,7 @@ public class CoordinationBenchmark {
 
     @Benchmark
     public TeamPlan coordinate() {
-        return coordinator.coordinate(teams[next()], phalanx.coordination.Mode.ACTIVE, null);
+        return coordinator.coordinate(teams[next()], phalanx.coordination.Mode.ACTIVE, Memory.NONE);
     }
 
     /** The support mapping alone (its cost tables are built in set-up). */

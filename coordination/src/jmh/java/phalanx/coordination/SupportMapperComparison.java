@@ -36,7 +36,7 @@ public final class SupportMapperComparison {
         DynamicProgrammingSupportMapper dp = new DynamicProgrammingSupportMapper();
         Coordinator capturing = new Coordinator(C, cost -> { captured[0] = cost; return dp.map(cost); });
         while (rounds.size() < count) {
-            capturing.coordinate(randomTeam(rnd), Mode.ACTIVE, null);
+            capturing.coordinate(randomTeam(rnd), Mode.ACTIVE, Memory.NONE);
             rounds.add(captured[0]);
         }
         for (int i = 0; i < count; i++) uniform.add(uniformInstance(rnd, 8));

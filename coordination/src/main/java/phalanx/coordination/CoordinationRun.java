@@ -32,7 +32,7 @@ public final class CoordinationRun {
     private final SupportMapper supportMapper;
     private final TeamBeliefs input;
     private final Mode mode;
-    private final TeamPlan previous;
+    private final Memory previous;
 
     private GlobalBeliefs beliefs;
     private Subsets subsets;
@@ -45,13 +45,13 @@ public final class CoordinationRun {
     private int done;
 
     CoordinationRun(CoordinationConfig config, SupportMapper supportMapper, TeamBeliefs input, Mode mode,
-                    TeamPlan previous) {
+                    Memory previous) {
         if (input == null || mode == null) throw new IllegalArgumentException("beliefs and mode are needed");
         this.config = config;
         this.supportMapper = supportMapper;
         this.input = input;
         this.mode = mode;
-        this.previous = previous;
+        this.previous = previous == null ? Memory.NONE : previous;
     }
 
     private void step(int phase) {
@@ -66,7 +66,7 @@ public final class CoordinationRun {
     public void updateBeliefs() {
         step(1);
         beliefs = BeliefsUpdate.update(input, config.ballClusterThreshold(), config.ballClusterExponent(),
-                previous == null ? null : previous.ball());
+                previous.ball());
     }
 
     /** Phase 2, "Determine Coordination Subsets" (5.5, modes 5.2). */
@@ -91,7 +91,7 @@ public final class CoordinationRun {
         Vector2 ball = beliefs.ball();
         List<PlayerBelief> activeBeliefs = new ArrayList<>(active.size());
         for (int id : active) activeBeliefs.add(beliefs.player(id));
-        int previousOnBall = previous == null ? 0 : previous.onBall();
+        int previousOnBall = previous.onBall();
         onBall = OnBallChooser.choose(activeBeliefs, ball, field.opponentGoal(), config.onBall(), previousOnBall);
 
         List<Integer> others = new ArrayList<>(active);

@@ -7,7 +7,7 @@ import phalanx.coordination.support.SupportMapper;
 /**
  * The goalkeeper's team coordination (thesis chapter 5): the team's reports and the mode in, one
  * assignment per player out. Pure: no clock, no socket, no state of its own; the previous plan is passed
- * in for the on-ball hysteresis (5.8) and as the ball of last resort.
+ * in ({@link TeamPlan#memory()}) for the on-ball hysteresis (5.8) and as the ball of last resort.
  */
 public final class Coordinator {
     private final CoordinationConfig config;
@@ -27,9 +27,9 @@ public final class Coordinator {
     /**
      * All six phases of Algorithm 3 at once.
      *
-     * @param previous the previous round's plan, or null
+     * @param previous what the previous round left ({@link TeamPlan#memory()}), or {@link Memory#NONE}
      */
-    public TeamPlan coordinate(TeamBeliefs beliefs, Mode mode, TeamPlan previous) {
+    public TeamPlan coordinate(TeamBeliefs beliefs, Mode mode, Memory previous) {
         CoordinationRun run = start(beliefs, mode, previous);
         run.updateBeliefs();
         run.determineSubsets();
@@ -40,7 +40,7 @@ public final class Coordinator {
     }
 
     /** A round whose phases the caller runs one by one (see {@code schedule.CoordinationSchedule}). */
-    public CoordinationRun start(TeamBeliefs beliefs, Mode mode, TeamPlan previous) {
+    public CoordinationRun start(TeamBeliefs beliefs, Mode mode, Memory previous) {
         return new CoordinationRun(config, supportMapper, beliefs, mode, previous);
     }
 }

@@ -45,5 +45,8 @@ public record TeamPlan(Mode mode, GlobalBeliefs beliefs, Subsets subsets, boolea
 
     public Vector2 ball() { return beliefs.ball(); }
 
+    /** What the next round needs from this one. */
+    public Memory memory() { return new Memory(onBall(), ball()); }
+
     public List<String> warnings() { return beliefs.warnings(); }
 }

@@ -21,7 +21,7 @@ class CoordinatorTest {
 
     @Test
     void everyPlayerGetsOneDistinctRoleAndOneOnBallPlayer() {
-        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(new Vector2(4, 2)), Mode.ACTIVE, null);
+        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(new Vector2(4, 2)), Mode.ACTIVE, Memory.NONE);
         assertEquals(11, plan.assignments().size());
         Set<Role> roles = EnumSet.noneOf(Role.class);
         int onBall = 0;
@@ -56,7 +56,7 @@ class CoordinatorTest {
     @Test
     void defensiveScenarioSendsActivePlayersBetweenBallAndGoal() {
         Vector2 ball = new Vector2(-8, -1);
-        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(ball), Mode.ACTIVE, null);
+        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(ball), Mode.ACTIVE, Memory.NONE);
         assertTrue(plan.defensive());
         for (Assignment a : plan.assignments()) {
             if (a.action() == Action.ACTIVE_POSITION) {
@@ -73,7 +73,7 @@ class CoordinatorTest {
     void oneInactivePlayerDropsTheRoleFarthestFromTheBall() {
         Vector2 ball = new Vector2(6, -3);
         TeamBeliefs t = Scenarios.replace(Scenarios.eleven(ball), PlayerReport.lost(3));
-        TeamPlan plan = coordinator.coordinate(t, Mode.ACTIVE, null);
+        TeamPlan plan = coordinator.coordinate(t, Mode.ACTIVE, Memory.NONE);
         assertEquals(Action.LOCALIZE, plan.assignment(3).action());
         assertNull(plan.assignment(3).target());
         assertEquals(1, plan.droppedRoles().size());
@@ -92,26 +92,25 @@ class CoordinatorTest {
         TeamBeliefs t = Scenarios.eleven(new Vector2(0, 0));
         t = Scenarios.replace(t, PlayerReport.complete(10, new Pose2(-1.0, 0, 0), Vector2.ZERO));
         t = Scenarios.replace(t, PlayerReport.complete(9, new Pose2(-1.6, 0.1, 0), Vector2.ZERO));
-        TeamPlan first = coordinator.coordinate(t, Mode.ACTIVE, null);
+        TeamPlan first = coordinator.coordinate(t, Mode.ACTIVE, Memory.NONE);
         assertEquals(10, first.onBall());
-        TeamPlan withNine = coordinator.coordinate(t, Mode.ACTIVE, planWithOnBall(first, 9));
+        assertEquals(new Memory(10, Vector2.ZERO), first.memory());
+        TeamPlan withNine = coordinator.coordinate(t, Mode.ACTIVE, new Memory(9, Vector2.ZERO));
         assertEquals(9, withNine.onBall());
+        // 9 farther than the hysteresis (2.1 m against 1.0 m): the ball goes back to 10.
+        TeamBeliefs far = Scenarios.replace(t, PlayerReport.complete(9, new Pose2(-2.1, 0.1, 0), Vector2.ZERO));
+        assertEquals(10, coordinator.coordinate(far, Mode.ACTIVE, new Memory(9, Vector2.ZERO)).onBall());
     }
 
-    /** The same plan with the on-ball action moved to another player (as if an earlier round chose it). */
-    private static TeamPlan planWithOnBall(TeamPlan p, int id) {
-        List<Assignment> as = new ArrayList<>();
-        for (Assignment a : p.assignments()) {
-            Action action = a.id() == id ? Action.ON_BALL : a.action() == Action.ON_BALL ? Action.ACTIVE_POSITION : a.action();
-            as.add(new Assignment(a.id(), a.subset(), action, a.role(), a.target(), a.orientationDeg()));
-        }
-        return new TeamPlan(p.mode(), p.beliefs(), p.subsets(), p.defensive(), p.activeCandidates(), p.formation(),
-                p.droppedRoles(), as, p.supportEvaluated());
+    @Test
+    void nobodySeesTheBallSoThePreviousBallIsUsed() {
+        TeamBeliefs t = new TeamBeliefs(FieldSpec.V066, List.of(PlayerReport.located(2, new Pose2(0, 0, 0))));
+        assertEquals(new Vector2(3, 3), coordinator.coordinate(t, Mode.ACTIVE, new Memory(0, new Vector2(3, 3))).ball());
     }
 
     @Test
     void supportModeSendsEveryFieldPlayerToTheFormation() {
-        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(new Vector2(0, 0)), Mode.SUPPORT, null);
+        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(new Vector2(0, 0)), Mode.SUPPORT, Memory.NONE);
         assertEquals(0, plan.onBall());
         assertTrue(plan.subsets().active().isEmpty());
         assertEquals(10L << 9, plan.supportEvaluated());   // 10 support players: 5,120 mappings
@@ -121,7 +120,7 @@ class CoordinatorTest {
 
     @Test
     void waitModeTellsEveryFieldPlayerToWait() {
-        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(new Vector2(0, 0)), Mode.WAIT, null);
+        TeamPlan plan = coordinator.coordinate(Scenarios.eleven(new Vector2(0, 0)), Mode.WAIT, Memory.NONE);
         for (Assignment a : plan.assignments())
             assertEquals(a.id() == 1 ? Action.GOALKEEPER : Action.WAIT, a.action());
     }
@@ -131,7 +130,7 @@ class CoordinatorTest {
         List<PlayerReport> r = new ArrayList<>();
         Vector2 ball = new Vector2(-3, 2);
         for (int i = 1; i <= 9; i++) r.add(PlayerReport.complete(i, new Pose2(-9 + i, i % 3 - 1, 0), ball));
-        TeamPlan plan = coordinator.coordinate(new TeamBeliefs(FieldSpec.V065, r), Mode.ACTIVE, null);
+        TeamPlan plan = coordinator.coordinate(new TeamBeliefs(FieldSpec.V065, r), Mode.ACTIVE, Memory.NONE);
         Set<Role> roles = EnumSet.noneOf(Role.class);
         for (Assignment a : plan.assignments()) roles.add(a.role());
         assertEquals(new HashSet<>(Role.forPlayers(9)), roles);
@@ -146,7 +145,7 @@ class CoordinatorTest {
         r.add(PlayerReport.located(40, new Pose2(0, 0, 0)));
         r.add(null);
         r.add(PlayerReport.located(4, new Pose2(2, 2, 0)));
-        TeamPlan plan = coordinator.coordinate(new TeamBeliefs(FieldSpec.V066, r), Mode.ACTIVE, null);
+        TeamPlan plan = coordinator.coordinate(new TeamBeliefs(FieldSpec.V066, r), Mode.ACTIVE, Memory.NONE);
         assertEquals(4, plan.assignments().size());
         assertEquals(Action.ON_BALL, plan.assignment(4).action());
         assertEquals(Action.LOCALIZE, plan.assignment(2).action());
@@ -156,7 +155,7 @@ class CoordinatorTest {
 
     @Test
     void emptyTeamGivesAnEmptyPlan() {
-        TeamPlan plan = coordinator.coordinate(new TeamBeliefs(FieldSpec.V066, List.of()), Mode.ACTIVE, null);
+        TeamPlan plan = coordinator.coordinate(new TeamBeliefs(FieldSpec.V066, List.of()), Mode.ACTIVE, Memory.NONE);
         assertTrue(plan.assignments().isEmpty());
     }
 
@@ -168,7 +167,7 @@ class CoordinatorTest {
                 c.ballClusterExponent(), new CoordinationConfig.ActivePositionsConfig(1, 1.5, 12, 2, 12, 3, 24, 4.0, 9),
                 c.onBall(), c.activeWeights(), c.collision(), c.supportWeights(), c.formation());
         TeamPlan plan = new Coordinator(wide, new phalanx.coordination.support.DynamicProgrammingSupportMapper())
-                .coordinate(Scenarios.eleven(new Vector2(14, 9)), Mode.ACTIVE, null);
+                .coordinate(Scenarios.eleven(new Vector2(14, 9)), Mode.ACTIVE, Memory.NONE);
         assertTrue(plan.activeCandidates().isEmpty());
         assertEquals(1, plan.subsets().active().size());
         assertEquals(9, plan.subsets().support().size());

@@ -3,6 +3,7 @@ package phalanx.coordination.schedule;
 import java.util.Optional;
 import phalanx.coordination.CoordinationRun;
 import phalanx.coordination.Coordinator;
+import phalanx.coordination.Memory;
 import phalanx.coordination.Mode;
 import phalanx.coordination.TeamPlan;
 import phalanx.coordination.beliefs.TeamBeliefs;
@@ -44,7 +45,7 @@ public final class CoordinationSchedule {
     public boolean busy() { return run != null; }
 
     /** Starts a round with the reports gathered so far; refuses while one is under way. */
-    public void start(TeamBeliefs beliefs, Mode mode, TeamPlan previous) {
+    public void start(TeamBeliefs beliefs, Mode mode, Memory previous) {
         if (busy()) throw new IllegalStateException("a coordination round is under way (" + run.phasesDone() + " of 6 phases done)");
         run = coordinator.start(beliefs, mode, previous);
     }

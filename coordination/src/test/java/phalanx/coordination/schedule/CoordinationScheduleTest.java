@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import phalanx.coordination.Coordinator;
+import phalanx.coordination.Memory;
 import phalanx.coordination.Mode;
 import phalanx.coordination.TeamPlan;
 import phalanx.coordination.beliefs.PlayerReport;
@@ -29,20 +30,20 @@ class CoordinationScheduleTest {
         CoordinationSchedule s = new CoordinationSchedule(c, false);
         assertFalse(s.busy());
         assertEquals(Optional.empty(), s.cycle());
-        s.start(TEAM, Mode.ACTIVE, null);
+        s.start(TEAM, Mode.ACTIVE, Memory.NONE);
         for (int cycle = 1; cycle <= 5; cycle++) {
             assertTrue(s.busy());
             assertEquals(Optional.empty(), s.cycle(), "cycle " + cycle);
         }
         TeamPlan plan = s.cycle().orElseThrow();
         assertFalse(s.busy());
-        assertEquals(c.coordinate(TEAM, Mode.ACTIVE, null).assignments(), plan.assignments());
+        assertEquals(c.coordinate(TEAM, Mode.ACTIVE, Memory.NONE).assignments(), plan.assignments());
     }
 
     @Test
     void singleCycleRunsAllPhasesAtOnce() {
         CoordinationSchedule s = new CoordinationSchedule(new Coordinator(), true);
-        s.start(TEAM, Mode.ACTIVE, null);
+        s.start(TEAM, Mode.ACTIVE, Memory.NONE);
         assertTrue(s.cycle().isPresent());
         assertFalse(s.busy());
     }
@@ -56,15 +57,15 @@ class CoordinationScheduleTest {
     @Test
     void aSecondStartDuringARoundIsRefused() {
         CoordinationSchedule s = new CoordinationSchedule(new Coordinator(), false);
-        s.start(TEAM, Mode.ACTIVE, null);
+        s.start(TEAM, Mode.ACTIVE, Memory.NONE);
         s.cycle();
-        IllegalStateException e = assertThrows(IllegalStateException.class, () -> s.start(TEAM, Mode.ACTIVE, null));
+        IllegalStateException e = assertThrows(IllegalStateException.class, () -> s.start(TEAM, Mode.ACTIVE, Memory.NONE));
         assertEquals("a coordination round is under way (1 of 6 phases done)", e.getMessage());
     }
 
     @Test
     void phasesOutOfOrderAreRefused() {
-        var run = new Coordinator().start(TEAM, Mode.ACTIVE, null);
+        var run = new Coordinator().start(TEAM, Mode.ACTIVE, Memory.NONE);
         IllegalStateException e = assertThrows(IllegalStateException.class, run::determineSubsets);
         assertEquals("phase 2 called after phase 0", e.getMessage());
     }
