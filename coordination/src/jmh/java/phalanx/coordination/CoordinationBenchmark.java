@@ -24,8 +24,9 @@ import phalanx.localization.field.Vector2;
 
 /**
  * One whole coordination round (all six phases, 11 players, every one reporting type C, nobody inactive,
- * Active mode: 3 active and 7 support players) and the support mapping alone (7 players as in that
- * round, and 10 as in Support mode), over 256 random situations visited in turn.
+ * Active mode: 3 active and 7 support players), the same in Support mode (10 support players), and the
+ * support mapping alone (7 players as in the first, 10 as in the second), over 256 random situations
+ * visited in turn.
  * Run: {@code scripts/coord-bench}, or {@code gradle -q :coordination:jmh -PjmhArgs='CoordinationBenchmark -f 1'}.
  */
 @State(Scope.Thread)
@@ -83,6 +84,12 @@ public class CoordinationBenchmark {
     @Benchmark
     public TeamPlan coordinate() {
         return coordinator.coordinate(teams[next()], phalanx.coordination.Mode.ACTIVE, Memory.NONE);
+    }
+
+    /** The worst case for the support mapping: Support mode, all 10 field players support (5,120 mappings). */
+    @Benchmark
+    public TeamPlan coordinateSupportMode() {
+        return coordinator.coordinate(teams[next()], phalanx.coordination.Mode.SUPPORT, Memory.NONE);
     }
 
     /** The support mapping alone (its cost tables are built in set-up). */
