@@ -115,6 +115,6 @@ public record CoordinationConfig(int goalkeeperId, int activeCount,
                                   double midfieldBehindForwards, double goalkeeperDepth, double inset) {
         public static final FormationConfig DEFAULT = new FormationConfig(
                 2.0, 3.0,   // thesis 5.9
-                1.8, 0.5, 0.6, -1.0, 2.0, 1.5, 115, 2.0, 3.0, 2.5, 95, 3.0, 0.4, 0.5);
+                1.8, 0.5, 0.6, -1.0, 2.0, 1.5, 115, 2.0, 3.0, 2.5, 95, 3.0, 0.5, 0.5);
     }
 }
