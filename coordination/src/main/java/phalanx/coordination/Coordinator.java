@@ -1,0 +1,46 @@
+package phalanx.coordination;
+
+import phalanx.coordination.beliefs.TeamBeliefs;
+import phalanx.coordination.support.DynamicProgrammingSupportMapper;
+import phalanx.coordination.support.SupportMapper;
+
+/**
+ * The goalkeeper's team coordination (thesis chapter 5): the team's reports and the mode in, one
+ * assignment per player out. Pure: no clock, no socket, no state of its own; the previous plan is passed
+ * in ({@link TeamPlan#memory()}) for the on-ball hysteresis (5.8) and as the ball of last resort.
+ */
+public final class Coordinator {
+    private final CoordinationConfig config;
+    private final SupportMapper supportMapper;
+
+    public Coordinator(CoordinationConfig config, SupportMapper supportMapper) {
+        if (config == null || supportMapper == null) throw new IllegalArgumentException("config and support mapper are needed");
+        this.config = config;
+        this.supportMapper = supportMapper;
+    }
+
+    /** The thesis's constants and its support mapping (Algorithm 5). */
+    public Coordinator() { this(CoordinationConfig.THESIS, new DynamicProgrammingSupportMapper()); }
+
+    public CoordinationConfig config() { return config; }
+
+    /**
+     * All six phases of Algorithm 3 at once.
+     *
+     * @param previous what the previous round left ({@link TeamPlan#memory()}), or {@link Memory#NONE}
+     */
+    public TeamPlan coordinate(TeamBeliefs beliefs, Mode mode, Memory previous) {
+        CoordinationRun run = start(beliefs, mode, previous);
+        run.updateBeliefs();
+        run.determineSubsets();
+        run.determineActivePositions();
+        run.coordinateActivePlayers();
+        run.formationRolesAndSupportPositions();
+        return run.coordinateSupportPlayers();
+    }
+
+    /** A round whose phases the caller runs one by one (see {@code schedule.CoordinationSchedule}). */
+    public CoordinationRun start(TeamBeliefs beliefs, Mode mode, Memory previous) {
+        return new CoordinationRun(config, supportMapper, beliefs, mode, previous);
+    }
+}
