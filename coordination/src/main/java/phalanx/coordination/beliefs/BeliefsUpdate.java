@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import phalanx.localization.field.FieldSpec;
 import phalanx.localization.field.Vector2;
+import phalanx.localization.team.BallFusion;
 
 /**
  * Phase 1 of Algorithm 3, "Update Coordination Beliefs" (thesis 5.4): fuses the players' reports into
@@ -48,7 +49,7 @@ public final class BeliefsUpdate {
         List<Vector2> observations = new ArrayList<>();
         for (PlayerReport r : byId.values())
             if (r.type() == ReportType.C && !r.fallen()) observations.add(r.ball());
-        Vector2 ball = BallFusion.fuse(observations, clusterThreshold, clusterExponent);
+        Vector2 ball = new BallFusion(clusterThreshold, clusterExponent).fuse(observations);
         if (ball == null) {
             Vector2 fb = beliefs.fallbackBall();
             if (fb != null && fb.isFinite()) ball = fb;

@@ -1,4 +1,4 @@
-package phalanx.coordination.beliefs;
+package phalanx.localization.team;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -6,12 +6,14 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import phalanx.localization.field.Vector2;
 
-class BallFusionTest {
-    private static Vector2 fuse(Vector2... o) { return BallFusion.fuse(List.of(o), 1.0, 3.0); }
+/** Clustering cases worked out by hand (thesis 5.4, Figure 5.3). */
+class BallFusionClusterTest {
+    private static final BallFusion FUSION = new BallFusion(1.0, 3.0);
+    private static Vector2 fuse(Vector2... o) { return FUSION.fuse(List.of(o)); }
 
     @Test
     void noObservationGivesNull() {
-        assertNull(BallFusion.fuse(List.of(), 1.0, 3.0));
+        assertNull(FUSION.fuse(List.of()));
     }
 
     @Test
