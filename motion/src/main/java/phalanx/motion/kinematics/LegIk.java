@@ -20,7 +20,7 @@ public final class LegIk {
         double roll = Math.atan2(left, down);            // positive roll moves the foot to the left
         double planeDown = Math.hypot(left, down);        // hip to ankle in the leg's plane
         double a = g.thigh(), b = g.shank();
-        double len = Math.min(Math.hypot(forward, planeDown), a + b - 1e-9);
+        double len = Math.min(Math.hypot(forward, planeDown), a + b);
         len = Math.max(len, Math.abs(a - b) + 1e-9);
         double kneeInner = Math.acos(clamp((a * a + b * b - len * len) / (2 * a * b)));
         double knee = -(Math.PI - kneeInner);

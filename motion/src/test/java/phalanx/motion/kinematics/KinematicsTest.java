@@ -19,11 +19,10 @@ class KinematicsTest {
 
     @Test
     void straightLegNeedsNoBending() {
-        // (the solver keeps 1 nm short of full stretch, a few thousandths of a degree)
         LegIk.LegAngles q = LegIk.solve(LegGeometry.TYPE_0, 0, 0, 0.22);
-        assertEquals(0, q.hipPitch(), 0.01);
-        assertEquals(0, q.knee(), 0.01);
-        assertEquals(0, q.anklePitch(), 0.01);
+        assertEquals(0, q.hipPitch(), 1e-9);
+        assertEquals(0, q.knee(), 1e-9);
+        assertEquals(0, q.anklePitch(), 1e-9);
         assertEquals(0, q.hipRoll(), 1e-9);
     }
 
