@@ -19,6 +19,16 @@ public final class JointVelocities {
     /** The command in rad/s, NaN for a joint that gets none. */
     public double radPerSecond(Joint j) { return radPerSecond[j.ordinal()]; }
 
+    /**
+     * A copy with one joint's command replaced (clamped by the caller), e.g. the head joints that
+     * the agent's Scan or Track actions (4.6.1) drive while a motion plays; NaN removes the command.
+     */
+    public JointVelocities with(Joint j, double radPerSecond) {
+        double[] copy = this.radPerSecond.clone();
+        copy[j.ordinal()] = radPerSecond;
+        return new JointVelocities(copy);
+    }
+
     /** Appends {@code (lle3 0.5)}... for every joint that has a command. */
     public EffectorMessage appendTo(EffectorMessage message) {
         for (Joint j : Joint.values()) if (has(j)) message.hinge(j, radPerSecond[j.ordinal()]);

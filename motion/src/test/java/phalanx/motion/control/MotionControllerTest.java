@@ -275,5 +275,8 @@ class MotionControllerTest {
         d[Joint.HJ1.ordinal()] = 5;
         JointVelocities v = c.step(0, new JointAngles(d), MotionRequest.of("reach"));
         assertEquals("(he1 0)(lle3 5.236)", v.appendTo(new EffectorMessage()).toString());
+        // The agent's head action may take the head over while the motion plays.
+        assertEquals("(he1 -1.5)(lle3 5.236)", v.with(Joint.HJ1, -1.5).appendTo(new EffectorMessage()).toString());
+        assertEquals(0.0, v.radPerSecond(Joint.HJ1), "with() leaves the original alone");
     }
 }
