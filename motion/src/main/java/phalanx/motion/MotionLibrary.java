@@ -1,0 +1,61 @@
+package phalanx.motion;
+
+import phalanx.motion.phase.PhaseMotionLoader;
+import phalanx.motion.webots.TextMotionLoader;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Collection;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.stream.Stream;
+
+/**
+ * The motions a player can request, by name: every {@code *.xml} (phase motion, 4.5.1) and
+ * {@code *.motion} (Webots text motion, 4.5.3) in a folder, named after the file. Loaded once at
+ * start; any bad file stops the start with a message naming file, line and field.
+ */
+public final class MotionLibrary {
+    private final Map<String, Motion> motions;
+
+    private MotionLibrary(Map<String, Motion> motions) { this.motions = Map.copyOf(motions); }
+
+    public static MotionLibrary of(Motion... motions) {
+        Map<String, Motion> m = new LinkedHashMap<>();
+        for (Motion x : motions) {
+            if (m.put(x.name(), x) != null) throw new IllegalArgumentException("two motions named '" + x.name() + "'");
+        }
+        return new MotionLibrary(m);
+    }
+
+    public static MotionLibrary load(Path dir) throws MotionFileException {
+        if (!Files.isDirectory(dir)) throw new MotionFileException(dir, 0, null, null, "not a folder of motion files");
+        List<Path> files;
+        try (Stream<Path> s = Files.list(dir)) {
+            files = s.filter(Files::isRegularFile).sorted().toList();
+        } catch (IOException e) {
+            throw new MotionFileException(dir.toString(), 0, null, null, "cannot list: " + e.getMessage(), e);
+        }
+        Map<String, Motion> m = new LinkedHashMap<>();
+        for (Path f : files) {
+            String n = f.getFileName().toString();
+            Motion motion;
+            if (n.endsWith(".xml")) motion = PhaseMotionLoader.load(f);
+            else if (n.endsWith(".motion")) motion = TextMotionLoader.load(f);
+            else continue;
+            Motion before = m.put(motion.name(), motion);
+            if (before != null) throw new MotionFileException(f, 0, null, null, "a second motion named '" + motion.name() + "' (also " + before.source() + ")");
+        }
+        return new MotionLibrary(m);
+    }
+
+    /** The motion with this name, or null. */
+    public Motion get(String name) { return name == null ? null : motions.get(name); }
+
+    public Set<String> names() { return motions.keySet(); }
+
+    public Collection<Motion> all() { return motions.values(); }
+}

@@ -1,0 +1,74 @@
+package phalanx.motion.bench;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Command line of scripts/motion-bench. Every bad flag gets a message naming it.
+ *
+ * @param types robot types to measure (the server needs at least three types in a team of eleven,
+ *              DESIGN.md, so the team fields 0, 1 and 2 at least)
+ */
+public record BenchOptions(String host, int port, int monitorPort, List<Integer> types, int trials,
+                           double walkSeconds, double turnSeconds, Path motions, String only) {
+
+    public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
+            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup]";
+
+    public static BenchOptions parse(String... args) {
+        String host = "127.0.0.1";
+        int port = 3100, monitorPort = 3200, trials = 3;
+        double walk = 10, turn = 5;
+        List<Integer> types = List.of(0, 1, 2);
+        Path motions = Path.of("motions");
+        String only = null;
+        for (int i = 0; i < args.length; i++) {
+            String flag = args[i];
+            if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(USAGE);
+            if (i + 1 >= args.length) throw new IllegalArgumentException(flag + " needs a value\n" + USAGE);
+            String v = args[++i];
+            switch (flag) {
+                case "--host" -> host = v;
+                case "--port" -> port = port(flag, v);
+                case "--monitor-port" -> monitorPort = port(flag, v);
+                case "--trials" -> trials = (int) number(flag, v, 1, 100, true);
+                case "--walk-seconds" -> walk = number(flag, v, 1, 600, false);
+                case "--turn-seconds" -> turn = number(flag, v, 1, 600, false);
+                case "--motions" -> motions = Path.of(v);
+                case "--only" -> {
+                    if (!List.of("walk", "turn", "kick", "getup").contains(v)) throw new IllegalArgumentException("--only must be walk, turn, kick or getup, got '" + v + "'");
+                    only = v;
+                }
+                case "--type" -> {
+                    List<Integer> t = new ArrayList<>();
+                    for (String s : v.split(",")) {
+                        int n = (int) number(flag, s.strip(), 0, 4, true);
+                        if (t.contains(n)) throw new IllegalArgumentException("--type lists " + n + " twice");
+                        t.add(n);
+                    }
+                    types = List.copyOf(t);
+                }
+                default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
+            }
+        }
+        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only);
+    }
+
+    public boolean runs(String what) { return only == null || only.equals(what); }
+
+    private static int port(String flag, String v) { return (int) number(flag, v, 1, 65535, true); }
+
+    private static double number(String flag, String v, double min, double max, boolean whole) {
+        double d;
+        try {
+            d = whole ? Integer.parseInt(v) : Double.parseDouble(v);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(flag + " needs " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
+        }
+        if (!(d >= min && d <= max)) throw new IllegalArgumentException(flag + " must be in [" + fmt(min) + ", " + fmt(max) + "], got " + v);
+        return d;
+    }
+
+    private static String fmt(double d) { return d == Math.rint(d) ? String.valueOf((long) d) : String.valueOf(d); }
+}

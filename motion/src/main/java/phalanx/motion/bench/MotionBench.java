@@ -1,0 +1,352 @@
+package phalanx.motion.bench;
+
+import phalanx.comm.effector.EffectorMessage;
+import phalanx.comm.perception.Joint;
+import phalanx.comm.perception.Perception;
+import phalanx.comm.sexp.MalformedMessageException;
+import phalanx.comm.sexp.PerceptionParser;
+import phalanx.comm.wire.ServerConnection;
+import phalanx.motion.MotionConfig;
+import phalanx.motion.MotionFileException;
+import phalanx.motion.MotionLibrary;
+import phalanx.motion.control.JointVelocities;
+import phalanx.motion.control.MotionController;
+import phalanx.motion.control.MotionRequest;
+import phalanx.motion.kinematics.LegGeometry;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * scripts/motion-bench: one player in a running rcssserver3d, trials set up with the monitor port's
+ * trainer commands and measured with the monitor's scene graph (ground truth): forward walk speed,
+ * turn rate, kick distance and direction error, get-up success and time, falls, per robot type.
+ * Prints a table; the last line is the summary (means over the types).
+ */
+public final class MotionBench {
+    private static final String TEAM = "PhalanxBench";
+    private final BenchOptions opt;
+    private final MotionLibrary library;
+    private final MonitorScene scene = new MonitorScene();
+    private ServerConnection monitor;
+    private volatile String monitorError;
+
+    // the player of the type being measured
+    private ServerConnection agent;
+    private MotionController controller;
+    private final PerceptionParser parser = new PerceptionParser();
+    private final EffectorMessage out = new EffectorMessage();
+    private Perception last;
+    private double standingZ;
+    private long cycles;
+
+    private MotionBench(BenchOptions opt, MotionLibrary library) {
+        this.opt = opt;
+        this.library = library;
+    }
+
+    public static void main(String[] args) {
+        BenchOptions opt;
+        MotionLibrary lib;
+        try {
+            opt = BenchOptions.parse(args);
+            lib = MotionLibrary.load(opt.motions());
+        } catch (IllegalArgumentException | MotionFileException e) {
+            System.err.println("motion-bench: " + e.getMessage());
+            System.exit(2);
+            return;
+        }
+        try {
+            new MotionBench(opt, lib).run();
+        } catch (IOException | RuntimeException e) {
+            System.err.println("motion-bench: " + e.getMessage());
+            System.exit(1);
+        }
+    }
+
+    /** Per-type results. */
+    static final class Row {
+        int type;
+        List<Double> walk = new ArrayList<>(), turnL = new ArrayList<>(), turnR = new ArrayList<>();
+        List<Double> kick = new ArrayList<>(), kickDir = new ArrayList<>(), strong = new ArrayList<>(), strongDir = new ArrayList<>();
+        int getupTries, getupOk;
+        List<Double> getupTime = new ArrayList<>();
+        int falls;
+        double walkMinutes;
+    }
+
+    private void run() throws IOException {
+        monitor = ServerConnection.connect(opt.host(), opt.monitorPort(), 10_000);
+        Thread reader = new Thread(this::readMonitor, "monitor");
+        reader.setDaemon(true);
+        reader.start();
+        trainer("(playMode PlayOn)");
+        List<Row> rows = new ArrayList<>();
+        for (int type : opt.types()) rows.add(measure(type));
+        monitor.close();
+        print(rows);
+    }
+
+    private void readMonitor() {
+        try {
+            while (true) {
+                monitor.reader().next();
+                String text = monitor.reader().text();
+                synchronized (scene) {
+                    try {
+                        scene.apply(text);
+                    } catch (IllegalArgumentException e) {
+                        monitorError = e.getMessage();
+                    }
+                }
+            }
+        } catch (IOException e) {
+            monitorError = "monitor connection: " + e.getMessage();
+        }
+    }
+
+    private void trainer(String command) throws IOException {
+        synchronized (monitor) {
+            monitor.send(command);
+        }
+    }
+
+    private MonitorScene.Pose torso() {
+        synchronized (scene) {
+            return scene.torso(1, "Left");
+        }
+    }
+
+    private double[] ball() {
+        synchronized (scene) {
+            return scene.ball();
+        }
+    }
+
+    // --- the player -----------------------------------------------------------------------------
+
+    private Row measure(int type) throws IOException {
+        Row row = new Row();
+        row.type = type;
+        standingZ = LegGeometry.forType(type).standingTorsoHeight();
+        agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
+        agent.send(EffectorMessage.scene(type));
+        receive();
+        agent.send(EffectorMessage.init(1, TEAM));
+        receive();
+        controller = new MotionController(library, MotionConfig.DEFAULT);
+        hold(25);
+        trainer("(playMode PlayOn)");
+        for (int t = 0; t < opt.trials(); t++) {
+            if (opt.runs("walk")) walk(row);
+            if (opt.runs("turn")) {
+                row.turnL.add(turn("turn_left"));
+                row.turnR.add(-turn("turn_right"));
+            }
+            if (opt.runs("kick")) {
+                double[] k = kick("kick");
+                row.kick.add(k[0]);
+                row.kickDir.add(k[1]);
+                double[] s = kick("strong_kick");
+                row.strong.add(s[0]);
+                row.strongDir.add(s[1]);
+            }
+            if (opt.runs("getup")) {
+                getUp(row, true);
+                getUp(row, false);
+            }
+            System.err.printf(Locale.ROOT, "type %d trial %d done (%d cycles)%n", type, t + 1, cycles);
+        }
+        agent.close();
+        hold0(50); // let the server drop the player before the next type connects
+        return row;
+    }
+
+    private void receive() throws IOException {
+        agent.reader().next();
+        try {
+            last = parser.parse(agent.reader().buffer(), 0, agent.reader().length());
+        } catch (MalformedMessageException e) {
+            System.err.println("motion-bench: skipped a malformed server message: " + e.getMessage());
+        }
+        if (monitorError != null) throw new IOException(monitorError);
+    }
+
+    /** One cycle: read, step the controller, reply. A small head motion keeps trainer-moved robots from hanging. */
+    private void cycle(MotionRequest request) throws IOException {
+        receive();
+        cycles++;
+        JointVelocities v = controller.step(last.time(), last.joints(), request);
+        v = v.with(Joint.HJ1, 0.2 * Math.sin(cycles * 0.2));
+        out.reset();
+        v.appendTo(out).syn();
+        agent.send(out.text());
+    }
+
+    private void hold(int n) throws IOException { for (int i = 0; i < n; i++) cycle(MotionRequest.NONE); }
+
+    private void hold0(int n) {
+        try {
+            Thread.sleep(n * 20L);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Trainer move to (x, y) facing +x (the move's angle 0 faces +y, recordings README), then let it stand. */
+    private void place(double x, double y) throws IOException {
+        // finish whatever is playing first
+        for (int i = 0; i < 200 && controller.playing() != null; i++) cycle(MotionRequest.NONE);
+        trainer(String.format(Locale.ROOT, "(agent (unum 1) (team Left) (move %.3f %.3f %.3f -90))", x, y, standingZ + 0.01));
+        hold(50);
+    }
+
+    private boolean fallen() {
+        MonitorScene.Pose p = torso();
+        return p != null && (p.upZ() < 0.5 || p.z() < 0.5 * standingZ);
+    }
+
+    private void walk(Row row) throws IOException {
+        place(-8, 0);
+        int n = (int) Math.round(opt.walkSeconds() / 0.02);
+        MotionRequest walk = MotionRequest.of("walk_forward");
+        for (int i = 0; i < 50; i++) cycle(walk); // start-up, not measured
+        MonitorScene.Pose a = torso();
+        double t0 = last.time();
+        boolean fell = false;
+        for (int i = 0; i < n && !fell; i++) {
+            cycle(walk);
+            fell = fallen();
+        }
+        MonitorScene.Pose b = torso();
+        double dt = last.time() - t0;
+        double heading = Math.toRadians(a.yawDeg());
+        double along = (b.x() - a.x()) * Math.cos(heading) + (b.y() - a.y()) * Math.sin(heading);
+        row.walk.add(along / dt);
+        row.walkMinutes += dt / 60;
+        if (fell) row.falls++;
+        for (int i = 0; i < 100 && controller.playing() != null && !fell; i++) cycle(MotionRequest.NONE);
+    }
+
+    /** Degrees per second, counter-clockwise positive. */
+    private double turn(String motion) throws IOException {
+        place(-4, 4);
+        MotionRequest r = MotionRequest.of(motion);
+        for (int i = 0; i < 10; i++) cycle(r);
+        double yaw0 = torso().yawDeg(), prev = yaw0, total = 0;
+        double t0 = last.time();
+        int n = (int) Math.round(opt.turnSeconds() / 0.02);
+        for (int i = 0; i < n && !fallen(); i++) {
+            cycle(r);
+            double y = torso().yawDeg();
+            double d = y - prev;
+            while (d > 180) d -= 360;
+            while (d < -180) d += 360;
+            total += d;
+            prev = y;
+        }
+        return total / (last.time() - t0);
+    }
+
+    /** {distance m, direction error deg} of a right-foot kick from a standing start. */
+    private double[] kick(String motion) throws IOException {
+        place(0, -3);
+        MonitorScene.Pose p = torso();
+        double h = Math.toRadians(p.yawDeg());
+        // ball in front of the right foot: 0.17 m ahead of the torso, 0.055 m to its right
+        double bx = p.x() + 0.17 * Math.cos(h) + 0.055 * Math.sin(h), by = p.y() + 0.17 * Math.sin(h) - 0.055 * Math.cos(h);
+        trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042))", bx, by));
+        hold(10);
+        double[] b0 = ball();
+        long done = controller.completions();
+        for (int i = 0; i < 250 && controller.completions() == done; i++) cycle(MotionRequest.of(motion));
+        double[] prev = ball();
+        for (int i = 0; i < 400; i++) { // until the ball stops (at most 8 s)
+            hold(10);
+            double[] b = ball();
+            if (Math.hypot(b[0] - prev[0], b[1] - prev[1]) < 0.002) break;
+            prev = b;
+        }
+        double[] b1 = ball();
+        double dx = b1[0] - b0[0], dy = b1[1] - b0[1];
+        double dist = Math.hypot(dx, dy);
+        double err = dist < 0.05 ? Double.NaN : Math.abs(Math.toDegrees(Math.atan2(Math.sin(Math.atan2(dy, dx) - h), Math.cos(Math.atan2(dy, dx) - h))));
+        if (fallen()) getUpQuietly();
+        return new double[] {dist, err};
+    }
+
+    private void getUpQuietly() throws IOException {
+        for (int tries = 0; tries < 3 && fallen(); tries++) {
+            MonitorScene.Pose p = torso();
+            String m = p.forwardZ() > 0 ? "stand_up_back" : "stand_up_front";
+            long done = controller.completions();
+            for (int i = 0; i < 300 && controller.completions() == done; i++) cycle(MotionRequest.of(m).interrupting());
+            hold(50);
+        }
+    }
+
+    /** Tips the robot over with its ankles (S3 in the recordings: -2 rad/s falls on the back), then stands it up. */
+    private void getUp(Row row, boolean back) throws IOException {
+        place(4, 4);
+        double v = back ? -2 : 2;
+        for (int i = 0; i < 150 && !fallen(); i++) {
+            receive();
+            out.reset().hinge(Joint.LLJ5, v).hinge(Joint.RLJ5, v);
+            if (!back) out.hinge(Joint.LLJ3, 3).hinge(Joint.RLJ3, 3);
+            agent.send(out.syn().text());
+        }
+        hold(100); // lie still
+        if (!fallen()) return; // did not fall: not a get-up trial
+        MonitorScene.Pose p = torso();
+        String motion = p.forwardZ() > 0 ? "stand_up_back" : "stand_up_front";
+        row.getupTries++;
+        double t0 = last.time();
+        double upAt = Double.NaN;
+        long done = controller.completions();
+        MotionRequest r = MotionRequest.of(motion).interrupting();
+        for (int i = 0; i < 400 && controller.completions() == done; i++) {
+            cycle(r);
+            if (Double.isNaN(upAt) && torso().upZ() > 0.9 && torso().z() > 0.75 * standingZ) upAt = last.time() - t0;
+        }
+        for (int i = 0; i < 50; i++) cycle(MotionRequest.NONE); // must still stand 1 s later
+        boolean ok = !fallen() && torso().z() > 0.6 * standingZ;
+        if (ok) {
+            row.getupOk++;
+            row.getupTime.add(Double.isNaN(upAt) ? last.time() - t0 : upAt);
+        }
+        System.err.printf(Locale.ROOT, "  getup %s (%s): %s%n", motion, back ? "pushed back" : "pushed front", ok ? "ok" : "failed");
+        if (!ok) getUpQuietly();
+    }
+
+    // --- report -------------------------------------------------------------------------------
+
+    private static double mean(List<Double> l) {
+        return l.stream().filter(d -> !Double.isNaN(d)).mapToDouble(Double::doubleValue).average().orElse(Double.NaN);
+    }
+
+    private void print(List<Row> rows) {
+        System.out.println("type | walk m/s | falls | turn L deg/s | turn R deg/s | kick m (dir err deg) | strong kick m (dir err deg) | get-up ok | get-up s");
+        double walk = 0, turn = 0, kick = 0, strong = 0, getup = 0, getupS = 0, falls = 0, minutes = 0;
+        int tries = 0, ok = 0;
+        for (Row r : rows) {
+            System.out.printf(Locale.ROOT, "%4d | %8.3f | %5d | %12.1f | %12.1f | %8.2f (%5.1f) | %8.2f (%5.1f) | %3d/%-3d | %6.2f%n",
+                    r.type, mean(r.walk), r.falls, mean(r.turnL), mean(r.turnR), mean(r.kick), mean(r.kickDir),
+                    mean(r.strong), mean(r.strongDir), r.getupOk, r.getupTries, mean(r.getupTime));
+            walk += mean(r.walk);
+            turn += (mean(r.turnL) + mean(r.turnR)) / 2;
+            kick += mean(r.kick);
+            strong += mean(r.strong);
+            getupS += mean(r.getupTime);
+            falls += r.falls;
+            minutes += r.walkMinutes;
+            tries += r.getupTries;
+            ok += r.getupOk;
+        }
+        int n = rows.size();
+        System.out.printf(Locale.ROOT, "walk_mps=%.3f turn_dps=%.1f kick_m=%.2f strong_kick_m=%.2f getup_success=%.2f getup_s=%.2f falls_per_min=%.2f%n",
+                walk / n, turn / n, kick / n, strong / n, tries == 0 ? Double.NaN : (double) ok / tries, getupS / n,
+                minutes == 0 ? Double.NaN : falls / minutes);
+    }
+}

@@ -1,0 +1,195 @@
+package phalanx.motion.control;
+
+import phalanx.comm.perception.Joint;
+import phalanx.comm.perception.JointAngles;
+import phalanx.motion.Motion;
+import phalanx.motion.MotionConfig;
+import phalanx.motion.MotionLibrary;
+import phalanx.motion.kinematics.JointLimits;
+import phalanx.motion.phase.Phase;
+import phalanx.motion.phase.PhaseMotion;
+import phalanx.motion.webots.TextMotion;
+
+import java.util.Arrays;
+import java.util.HashSet;
+import java.util.Set;
+import java.util.logging.Logger;
+
+/**
+ * The motion controller (4.5.2, 4.5.4): reads the requested-motion variable every cycle and
+ * continues the playing motion, finalizes it toward its final phase, or starts the requested one.
+ *
+ * <p>Phase motions: a phase of duration D lasts n = round(D / cycle) cycles (at least one); in its
+ * k-th cycle each listed joint gets (target - current) / ((n - k) cycles), every other joint 0.
+ * When the joint follows, that is the thesis's constant (target - start) / D; when it lags, the
+ * remaining cycles catch up. Text motions: each pose lasts Duration cycles, poses advance by
+ * PoseStep, and v = gain * (target - current) / (Duration * cycle) (4.5.4).
+ *
+ * <p>"current" is the reading plus the command already on its way: the server applies a command
+ * one cycle after the reading it answers (recordings README), so the reading lags by one command
+ * ({@link MotionConfig#latencyCycles()}; 0 gives the thesis's formula unchanged).
+ *
+ * <p>Values in, values out: time is the caller's (server time in seconds), no clock, no socket.
+ * One instance per player; not thread-safe.
+ */
+public final class MotionController {
+    private static final Logger LOG = Logger.getLogger(MotionController.class.getName());
+
+    private final MotionLibrary library;
+    private final MotionConfig config;
+    private final double dt;
+    private final double[] lastCommand = new double[Joint.COUNT]; // rad/s, 0 when none was sent
+    private final double[] targets = new double[Joint.COUNT];     // this phase's targets, deg, NaN = unlisted
+    private final Set<String> warnedUnknown = new HashSet<>();
+
+    private Motion playing;          // null when idle
+    private int index;               // phase or pose index
+    private double segmentStart;     // server time the phase/pose started
+    private int segmentCycles;       // its length in cycles
+    private boolean finalizing;      // on the way to the end (entered a finalize link, or a text motion's last pass)
+    private long completions;
+    private String lastCompleted;
+    private double lastNow = Double.NaN;
+
+    public MotionController(MotionLibrary library, MotionConfig config) {
+        this.library = library;
+        this.config = config;
+        this.dt = config.cycleSeconds();
+    }
+
+    /**
+     * One cycle: the joint readings (degrees) of the message with time {@code now} (seconds) and the
+     * request. Returns the hinge velocities to send in reply (rad/s, within the speed cap).
+     */
+    public JointVelocities step(double now, JointAngles current, MotionRequest request) {
+        if (!Double.isFinite(now)) now = Double.isNaN(lastNow) ? 0 : lastNow + dt; // a message without time
+        lastNow = now;
+        String wanted = request.motion();
+        if (wanted != null && library.get(wanted) == null) {
+            if (warnedUnknown.add(wanted)) LOG.warning("no motion named '" + wanted + "' (have " + library.names() + "); standing still");
+            wanted = null;
+        }
+        if (playing != null && request.interrupt() && !playing.name().equals(wanted)) {
+            playing = null; // aborted, not completed
+        }
+        if (playing != null) advance(now, wanted, request);
+        if (playing == null && wanted != null) start(library.get(wanted), now, request);
+
+        double[] out = new double[Joint.COUNT];
+        if (playing instanceof PhaseMotion) {
+            int remaining = Math.max(1, segmentCycles - elapsedCycles(now));
+            for (Joint j : Joint.values()) out[j.ordinal()] = phaseVelocity(j, current, remaining);
+        } else if (playing instanceof TextMotion tm) {
+            double gain = Math.max(config.turnGainMin(), Math.min(config.turnGainMax(), request.gain()));
+            Arrays.fill(targets, Double.NaN);
+            for (int k = 0; k < tm.joints().size(); k++) targets[tm.joints().get(k).ordinal()] = tm.targetDeg(index, k);
+            for (Joint j : Joint.values()) {
+                double v = phaseVelocity(j, current, config.textPoseCycles());
+                out[j.ordinal()] = Double.isNaN(v) ? v : clamp(gain * v);
+            }
+        } else {
+            for (Joint j : Joint.values()) out[j.ordinal()] = current.has(j) ? 0.0 : Double.NaN;
+        }
+        for (int i = 0; i < out.length; i++) lastCommand[i] = Double.isNaN(out[i]) ? 0 : out[i];
+        return new JointVelocities(out);
+    }
+
+    /** The playing motion's name, or null when idle. */
+    public String playing() { return playing == null ? null : playing.name(); }
+
+    /** The playing phase's (or pose's) name, or null when idle. */
+    public String segment() {
+        if (playing instanceof PhaseMotion pm) return pm.phase(index).name();
+        if (playing instanceof TextMotion tm) return tm.poseNames().get(index);
+        return null;
+    }
+
+    /** True once the playing motion has taken a finalize link (4.5.2) and is on its way to the end. */
+    public boolean finalizing() { return finalizing; }
+
+    /** How many motions have played to their end (aborted ones do not count). */
+    public long completions() { return completions; }
+
+    /** The motion that ended last, or null. */
+    public String lastCompleted() { return lastCompleted; }
+
+    private double phaseVelocity(Joint j, JointAngles current, int remainingCycles) {
+        if (!current.has(j)) return Double.NaN;
+        double target = targets[j.ordinal()];
+        if (Double.isNaN(target)) return 0.0;
+        double predicted = current.degrees(j) + config.latencyCycles() * Math.toDegrees(lastCommand[j.ordinal()]) * dt;
+        return clamp(Math.toRadians(target - predicted) / (remainingCycles * dt));
+    }
+
+    private double clamp(double v) { return Math.max(-config.maxJointSpeed(), Math.min(config.maxJointSpeed(), v)); }
+
+    private int elapsedCycles(double now) { return (int) Math.round((now - segmentStart) / dt); }
+
+    private void start(Motion m, double now, MotionRequest request) {
+        playing = m;
+        finalizing = false;
+        index = m instanceof PhaseMotion pm ? pm.first() : 0;
+        enter(now, request);
+    }
+
+    /** Ends the phase or pose whose time is up, moving on as 4.5.2 / 4.5.4 say. */
+    private void advance(double now, String wanted, MotionRequest request) {
+        if (elapsedCycles(now) < segmentCycles) return;
+        boolean same = playing.name().equals(wanted);
+        int nextIndex;
+        if (playing instanceof PhaseMotion pm) {
+            Phase p = pm.phase(index);
+            if (finalizing || !same) {
+                if (p.finalizeTo() >= 0) {
+                    nextIndex = p.finalizeTo();
+                    finalizing = true;
+                } else {
+                    nextIndex = p.next();
+                }
+            } else {
+                nextIndex = p.next();
+            }
+        } else {
+            TextMotion tm = (TextMotion) playing;
+            int last = tm.poseCount() - 1;
+            nextIndex = index == last ? -1 : Math.min(index + config.textPoseStep(), last);
+            if (nextIndex < 0 && same) nextIndex = 0; // turns repeat while requested
+        }
+        if (nextIndex < 0) {
+            completions++;
+            lastCompleted = playing.name();
+            playing = null;
+            return;
+        }
+        index = nextIndex;
+        enter(now, request);
+    }
+
+    private void enter(double now, MotionRequest request) {
+        segmentStart = now;
+        if (playing instanceof PhaseMotion pm) {
+            Phase p = pm.phase(index);
+            double scale = request.slowdown() ? config.walkSlowdownFactor() : 1.0;
+            segmentCycles = Math.max(1, (int) Math.round(p.durationMs() * scale / 1000.0 / dt));
+            for (Joint j : Joint.values()) targets[j.ordinal()] = p.targetDeg(j);
+            lean(p, request.lean());
+        } else {
+            segmentCycles = config.textPoseCycles();
+        }
+    }
+
+    /**
+     * Walk Leaning (4.5.5): in the phases where the leaning side's leg swings forward, that leg's
+     * hip pitch is reduced and its ankle pitch raised by the same amount (the foot stays parallel to
+     * the torso), so it takes a shorter step and the walk curves toward it.
+     */
+    private void lean(Phase p, double lean) {
+        Joint hip, ankle;
+        if (lean > 0 && p.swing() == Phase.Swing.LEFT) { hip = Joint.LLJ3; ankle = Joint.LLJ5; }
+        else if (lean < 0 && p.swing() == Phase.Swing.RIGHT) { hip = Joint.RLJ3; ankle = Joint.RLJ5; }
+        else return;
+        double delta = Math.abs(lean) * config.walkLeanDeg();
+        if (!Double.isNaN(targets[hip.ordinal()])) targets[hip.ordinal()] = JointLimits.clamp(hip, targets[hip.ordinal()] - delta);
+        if (!Double.isNaN(targets[ankle.ordinal()])) targets[ankle.ordinal()] = JointLimits.clamp(ankle, targets[ankle.ordinal()] + delta);
+    }
+}

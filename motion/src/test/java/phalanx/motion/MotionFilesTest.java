@@ -1,0 +1,55 @@
+package phalanx.motion;
+
+import org.junit.jupiter.api.Test;
+import phalanx.comm.perception.Joint;
+import phalanx.motion.phase.PhaseMotion;
+import phalanx.motion.webots.TextMotion;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** The project's own motion files in motions/ load and contain what the agent asks for (issue 6). */
+class MotionFilesTest {
+    static final Path DIR = Path.of("motions"); // the build runs tests from the project root
+
+    @Test
+    void everyRequiredMotionIsThereAndValid() throws Exception {
+        assertTrue(Files.isDirectory(DIR), "run from the project root: " + DIR.toAbsolutePath());
+        MotionLibrary lib = MotionLibrary.load(DIR);
+        for (String name : List.of("walk_forward", "side_step_left", "side_step_right", "turn_left", "turn_right",
+                "kick", "strong_kick", "stand_up_front", "stand_up_back", "dive_left", "dive_right")) {
+            assertNotNull(lib.get(name), "motions/ lacks " + name);
+        }
+        assertInstanceOf(TextMotion.class, lib.get("turn_left"), "turns are Webots text motions (4.5.3)");
+        assertInstanceOf(PhaseMotion.class, lib.get("walk_forward"));
+    }
+
+    @Test
+    void cyclicMotionsCanBeFinalizedAndMirrorsAreMirrored() throws Exception {
+        MotionLibrary lib = MotionLibrary.load(DIR);
+        PhaseMotion walk = (PhaseMotion) lib.get("walk_forward");
+        assertTrue(walk.phases().stream().anyMatch(p -> p.finalizeTo() >= 0), "walk needs a finalize exit");
+        TextMotion left = (TextMotion) lib.get("turn_left"), right = (TextMotion) lib.get("turn_right");
+        assertEquals(left.poseCount(), right.poseCount());
+        // Mirror: the left turn's left hip yaw-pitch is the right turn's right hip yaw-pitch.
+        int l = left.joints().indexOf(Joint.LLJ1), r = right.joints().indexOf(Joint.RLJ1);
+        for (int p = 0; p < left.poseCount(); p++) assertEquals(left.targetDeg(p, l), right.targetDeg(p, r), 1e-3);
+    }
+
+    @Test
+    void aBadFileInTheFolderStopsTheLoadWithItsName(@org.junit.jupiter.api.io.TempDir Path tmp) throws Exception {
+        Files.writeString(tmp.resolve("good.motion"), "#WEBOTS_MOTION,V1.0\nHeadYaw\n00:00:000,P1,0\n");
+        Files.writeString(tmp.resolve("bad.xml"), "<motion><phase name=\"A\"><effectors/><duration>-1</duration></phase></motion>");
+        Files.writeString(tmp.resolve("README.md"), "ignored");
+        MotionFileException e = assertThrows(MotionFileException.class, () -> MotionLibrary.load(tmp));
+        assertTrue(e.getMessage().contains("bad.xml") && e.getMessage().contains("duration"), e.getMessage());
+        Files.delete(tmp.resolve("bad.xml"));
+        Files.writeString(tmp.resolve("good.xml"), "<motion><phase name=\"A\"><effectors/><duration>20</duration></phase></motion>");
+        MotionFileException dup = assertThrows(MotionFileException.class, () -> MotionLibrary.load(tmp));
+        assertTrue(dup.getMessage().contains("a second motion named 'good'"), dup.getMessage());
+        assertThrows(MotionFileException.class, () -> MotionLibrary.load(tmp.resolve("nope")));
+    }
+}

@@ -1,0 +1,39 @@
+package phalanx.motion.bench;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+class BenchOptionsTest {
+    @Test
+    void defaultsAndFlags() {
+        BenchOptions d = BenchOptions.parse();
+        assertEquals("127.0.0.1", d.host());
+        assertEquals(3100, d.port());
+        assertEquals(3200, d.monitorPort());
+        assertEquals(List.of(0, 1, 2), d.types());
+        BenchOptions o = BenchOptions.parse("--host", "h", "--port", "3310", "--monitor-port", "3410", "--type", "4, 3", "--trials", "5", "--only", "kick");
+        assertEquals(3310, o.port());
+        assertEquals(3410, o.monitorPort());
+        assertEquals(List.of(4, 3), o.types());
+        assertTrue(o.runs("kick"));
+        assertFalse(o.runs("walk"));
+    }
+
+    @Test
+    void badFlagsAreNamed() {
+        assertTrue(msg("--port", "abc").contains("--port needs a whole number, got 'abc'"));
+        assertTrue(msg("--port", "70000").contains("--port must be in [1, 65535]"));
+        assertTrue(msg("--type", "5").contains("--type must be in [0, 4], got 5"));
+        assertTrue(msg("--type", "1,1").contains("--type lists 1 twice"));
+        assertTrue(msg("--speed", "2").contains("unknown flag '--speed'"));
+        assertTrue(msg("--host").contains("--host needs a value"));
+        assertTrue(msg("--only", "dance").contains("--only must be"));
+    }
+
+    private static String msg(String... args) {
+        return assertThrows(IllegalArgumentException.class, () -> BenchOptions.parse(args)).getMessage();
+    }
+}
