@@ -1,0 +1,34 @@
+package phalanx.agent.decide;
+
+/**
+ * What the body should do this cycle, said in the terms of thesis 4.6 rather than motion file
+ * names: {@code act.Locomotion} turns it into the motion controller's request, so the actions
+ * do not change when the walk does.
+ */
+public sealed interface Move {
+    /** Stand still (finish the playing motion and hold). */
+    record Stand() implements Move {}
+
+    /**
+     * Walk forward. {@code lean} -1 (right) .. 1 (left) curves the path (Walk Leaning, 4.5.5);
+     * {@code slow} shortens the steps near a target (Walk Slowdown).
+     */
+    record Walk(double lean, boolean slow) implements Move {}
+
+    /** Turn in place; {@code left} chooses the side, {@code gain} 0.3-1.0 the speed (Turn Gain, 4.5.5). */
+    record Turn(boolean left, double gain) implements Move {}
+
+    /** One side step. */
+    record SideStep(boolean left) implements Move {}
+
+    /** Kick with the right foot (the ball in front of it: Prepare for Kick); {@code strong} for the strong kick. */
+    record Kick(boolean strong) implements Move {}
+
+    /** Get up; {@code fromFront} when lying face down. */
+    record StandUp(boolean fromFront) implements Move {}
+
+    /** The goalkeeper's dive to one side. */
+    record Dive(boolean left) implements Move {}
+
+    Move STAND = new Stand();
+}
