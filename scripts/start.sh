@@ -63,8 +63,9 @@ jvm=(${PHALANX_JVM_OPTS:--Xms32m -Xmx96m -XX:+UseSerialGC -XX:TieredStopAtLevel=
 : > "$logdir/pids"
 for unum in $(seq 1 "$players"); do
   out="$logdir/player-$unum.out"
-  nohup java "${jvm[@]}" -cp "$cp" phalanx.agent.Player --host "$host" --port "$port" --team "$team" \
-    --unum "$unum" --players "$players" --type "${types[$((unum-1))]}" --log-dir "$logdir" > "$out" 2>&1 &
+  nohup java "${jvm[@]}" -Xlog:gc:file="$logdir/gc-$unum.log":uptime,level -cp "$cp" phalanx.agent.Player \
+    --host "$host" --port "$port" --team "$team" --unum "$unum" --players "$players" \
+    --type "${types[$((unum-1))]}" --log-dir "$logdir" --motions "$root/motions" ${PHALANX_PLAYER_OPTS:-} > "$out" 2>&1 &
   echo "$!" >> "$logdir/pids"
   # Wait until this player is in the game (or gone) before the next one connects.
   for _ in $(seq 1 100); do

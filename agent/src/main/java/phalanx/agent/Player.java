@@ -1,7 +1,21 @@
 package phalanx.agent;
 
+import phalanx.agent.roboviz.RoboViz;
+import phalanx.agent.team.TeamChannel;
+import phalanx.agent.team.TeamCoordination;
+import phalanx.comm.team.ChannelConfig;
+import phalanx.comm.team.TeamKey;
 import phalanx.comm.wire.ServerConnection;
 import phalanx.comm.wire.WireException;
+import phalanx.coordination.Coordinator;
+import phalanx.localization.LocalizationConfig;
+import phalanx.localization.belief.BeliefStore;
+import phalanx.localization.body.NaoBody;
+import phalanx.localization.field.FieldSpec;
+import phalanx.motion.MotionConfig;
+import phalanx.motion.MotionFileException;
+import phalanx.motion.MotionLibrary;
+import phalanx.motion.control.MotionController;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -10,8 +24,8 @@ import java.util.logging.Logger;
 import java.util.logging.SimpleFormatter;
 
 /**
- * One player process. Exit status: 0 after a normal end, 1 when the connection is lost, 2 on a
- * usage error, 3 when no server answered within 30 s.
+ * One player process. Exit status: 0 when the game ended (GameOver), 1 when the connection was
+ * lost, 2 on a usage error or a bad motion file, 3 when no server answered in time.
  */
 public final class Player {
     private static final Logger LOG = Logger.getLogger(Player.class.getName());
@@ -35,20 +49,65 @@ public final class Player {
             return 2;
         }
         if (o.logDir() != null && !openLog(o)) return 2;
+        PlayerParts parts;
+        try {
+            parts = parts(o);
+        } catch (MotionFileException e) {
+            System.err.println("phalanx-player: bad motion file: " + e.getMessage());
+            return 2;
+        } catch (IOException | IllegalArgumentException e) {
+            System.err.println("phalanx-player: cannot start: " + e.getMessage());
+            return 2;
+        }
         ServerConnection c;
         try {
             c = ServerConnection.connect(o.host(), o.port(), o.connectTimeoutMillis());
         } catch (WireException e) {
-            System.err.println("phalanx-player " + o.unum() + ": " + e.getMessage()
-                    + " (is rcssserver3d running? see README)");
+            System.err.println("phalanx-player " + o.unum() + ": " + e.getMessage() + " (is rcssserver3d running? see README)");
             return 3;
         }
         try (c) {
             LOG.info("connected to " + o.host() + ":" + o.port() + " as " + o.team() + " " + o.unum() + ", type " + o.robotType());
-            ThinkLoop.Outcome out = new ThinkLoop(c, o, new StandAndBeam(o.unum(), o.players())).run();
-            System.err.println("phalanx-player " + o.unum() + ": " + out.reason() + " after " + out.cycles() + " cycles ("
-                    + out.malformed() + " malformed messages skipped)");
-            return 1;
+            ThinkLoop.Outcome out = new ThinkLoop(c, o, parts).run();
+            String msg = "phalanx-player " + o.unum() + ": " + out.reason() + " after " + out.cycles() + " cycles ("
+                    + out.malformed() + " malformed messages skipped)";
+            LOG.info(msg);
+            System.err.println(msg);
+            return out.gameOver() ? 0 : 1;
+        }
+    }
+
+    /** Everything the player is made of; a bad motion file or RoboViz address fails here, at start. */
+    static PlayerParts parts(PlayerOptions o) throws MotionFileException, IOException {
+        FieldSpec field = FieldSpec.forPlayers(o.players());
+        if (!Files.isDirectory(o.motions())) {
+            throw new IOException("no motion folder at " + o.motions().toAbsolutePath() + " (use --motions DIR)");
+        }
+        MotionLibrary library = MotionLibrary.load(o.motions());
+        BeliefStore beliefs = new BeliefStore(field, LocalizationConfig.DEFAULT, NaoBody.ofType(o.robotType()), o.team(), null, o.unum());
+        RoboViz draw = o.roboviz() == null ? RoboViz.OFF : RoboViz.to(o.roboviz());
+        ChannelConfig channel = ChannelConfig.DEFAULT.withPlayers(o.players());
+        TeamKey key = teamKey(o.team());
+        return new PlayerParts(beliefs, new MotionController(library, MotionConfig.DEFAULT), field, draw, (unum, self) -> {
+            if (unum == channel.coordinator()) {
+                TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,
+                        self::playMode, () -> false);
+                return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), new InterimBrain());
+            }
+            return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum), new InterimBrain());
+        });
+    }
+
+    /**
+     * The per-match key start.sh passes in PHALANX_TEAM_KEY. Without one the player still plays, with a
+     * key derived from the team name (logged: opponents who guess it could forge our messages).
+     */
+    static TeamKey teamKey(String team) {
+        try {
+            return TeamKey.fromEnvironment(System.getenv());
+        } catch (IllegalArgumentException e) {
+            LOG.warning(e.getMessage() + "; using a key derived from the team name instead");
+            return TeamKey.fromSecret("phalanx-team-key-" + team);
         }
     }
 

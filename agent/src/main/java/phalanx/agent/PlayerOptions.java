@@ -5,7 +5,7 @@ import java.nio.file.Paths;
 
 /** The player's command line (issue 8). {@link #parse} names the flag at fault. */
 public record PlayerOptions(String host, int port, String team, int unum, int players, int robotType,
-                            Path logDir, long connectTimeoutMillis) {
+                            Path logDir, long connectTimeoutMillis, Path motions, String roboviz) {
 
     public static final String USAGE = """
             usage: phalanx-player [--host H] [--port P] [--team NAME] [--unum N] [--players 9|11] [--type T] [--log-dir DIR]
@@ -16,10 +16,12 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
               --players N    team size, 9 (server 0.6.5) or 11 (default 11)
               --type T       heterogeneous Nao type 0-4 (default 0)
               --log-dir DIR  directory for this player's log (default: no log file, stderr only)
-              --connect-timeout S  seconds to keep retrying while no server listens (default 30)""";
+              --connect-timeout S  seconds to keep retrying while no server listens (default 30)
+              --motions DIR  the motion files (default: motions/ in the working directory)
+              --roboviz H[:P]  draw beliefs into RoboViz at H (port 32769 by default); off by default""";
 
     public static PlayerOptions defaults() {
-        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000);
+        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null);
     }
 
     /** Parses flags; throws IllegalArgumentException whose message names the bad flag and value. */
@@ -29,6 +31,8 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
         int port = o.port, unum = o.unum, players = o.players, type = o.robotType;
         Path logDir = null;
         long connectMillis = o.connectTimeoutMillis;
+        Path motions = o.motions;
+        String roboviz = null;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("-h") || flag.equals("--help")) throw new IllegalArgumentException("help");
@@ -47,11 +51,13 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                 case "--type" -> type = intIn(flag, v, 0, 4);
                 case "--log-dir" -> logDir = Paths.get(v);
                 case "--connect-timeout" -> connectMillis = intIn(flag, v, 0, 3600) * 1000L;
+                case "--motions" -> motions = Paths.get(v);
+                case "--roboviz" -> roboviz = v;
                 default -> throw new IllegalArgumentException("unknown flag " + flag);
             }
         }
         if (unum > players) throw new IllegalArgumentException("--unum " + unum + " is more than --players " + players);
-        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis);
+        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz);
     }
 
     private static int intIn(String flag, String v, int min, int max) {

@@ -29,7 +29,7 @@ class ReplayEndToEndTest {
     private static ReplayServer.Result play(ReplayServer.Options options, PlayerOptions po) throws Exception {
         try (ReplayServer stub = new ReplayServer(s1, 0, options).start();
              ServerConnection c = ServerConnection.connect("127.0.0.1", stub.port(), 2000)) {
-            ThinkLoop.Outcome outcome = new ThinkLoop(c, po, new StandAndBeam(po.unum(), po.players())).run();
+            ThinkLoop.Outcome outcome = new ThinkLoop(c, po, Player.parts(po)).run();
             ReplayServer.Result r = stub.await(30, TimeUnit.SECONDS);
             assertEquals(s1.size(), outcome.cycles(), "the player saw every replayed message");
             return r;
@@ -44,10 +44,17 @@ class ReplayEndToEndTest {
         assertEquals(s1.size() + 1, r.received().size(), "scene plus one reply per perceptor line");
         assertEquals("(scene rsg/agent/nao/nao_hetero.rsg 0)", r.received().get(0));
         assertEquals("(init (unum 1)(teamname Phalanx))(syn)", r.received().get(1));
-        // S1 is BeforeKickOff throughout: exactly one beam, to player 1's kick-off spot, as the reply to line 2.
-        assertEquals("(beam -14 0 0)(syn)", r.received().get(2));
-        assertEquals(1, r.received().stream().filter(m -> m.contains("(beam")).count());
+        // S1 is BeforeKickOff throughout (20 s): a beam to player 1's kick-off spot as the reply to line 2,
+        // repeated every 2 s while the mode lasts.
+        assertTrue(r.received().get(2).startsWith("(beam -14 0 0)"), r.received().get(2));
+        long beams = r.received().stream().filter(m -> m.contains("(beam")).count();
+        assertEquals(10, beams);
         assertEquals(0, r.repliesWithoutSyn());
+        // Every reply after init drives the head (he1 he2) and is well formed for the server.
+        for (int i = 2; i < r.received().size(); i++) {
+            String m = r.received().get(i);
+            assertTrue(m.contains("(he1 ") && m.endsWith("(syn)"), "reply " + i + ": " + m);
+        }
     }
 
     @Test

@@ -1,0 +1,62 @@
+package phalanx.agent.team;
+
+import phalanx.comm.perception.Hear;
+import phalanx.comm.perception.PlayMode;
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ChannelConfig;
+import phalanx.comm.team.ChannelEvent;
+import phalanx.comm.team.ChannelOutput;
+import phalanx.comm.team.Coordinator;
+import phalanx.comm.team.FieldPlayer;
+import phalanx.comm.team.TeamKey;
+import phalanx.comm.team.TimeSlices;
+import phalanx.localization.belief.WorldBelief;
+
+import java.util.List;
+import java.util.logging.Logger;
+
+/**
+ * The player's end of the say/hear channel (thesis 4.7, 5.3): the coordinator's state machine on
+ * the goalkeeper, the field player's on the others. Stepped once a cycle; gives what to say, and
+ * on a field player the coordinator's last order and whether the coordinator has gone quiet.
+ */
+public final class TeamChannel {
+    private static final Logger LOG = Logger.getLogger(TeamChannel.class.getName());
+
+    private final Coordinator coordinator;   // player 1
+    private final FieldPlayer fieldPlayer;   // players 2..n
+    private final int unum;
+
+    private TeamChannel(Coordinator coordinator, FieldPlayer fieldPlayer, int unum) {
+        this.coordinator = coordinator;
+        this.fieldPlayer = fieldPlayer;
+        this.unum = unum;
+    }
+
+    public static TeamChannel coordinator(ChannelConfig config, TeamKey key, String team, TeamCoordination procedure) {
+        return new TeamChannel(new Coordinator(config, key, team, procedure), null, 1);
+    }
+
+    public static TeamChannel fieldPlayer(ChannelConfig config, TeamKey key, String team, int unum) {
+        return new TeamChannel(null, new FieldPlayer(config, unum, key, team), unum);
+    }
+
+    /** One cycle: returns the text to say, or null. */
+    public String step(double serverTime, PlayMode mode, List<Hear> heard, WorldBelief belief) {
+        long cycle = TimeSlices.cycleOf(serverTime);
+        ChannelOutput out = coordinator != null ? coordinator.step(cycle, mode, heard)
+                : fieldPlayer.step(cycle, mode, heard, () -> Reports.of(unum, belief));
+        for (ChannelEvent e : out.events()) {
+            if (!(e instanceof ChannelEvent.ActionReceived)) LOG.fine(() -> "team channel: " + e);
+        }
+        return out.say();
+    }
+
+    /** The coordinator's last order to this field player, or null (none yet, or on the goalkeeper). */
+    public Action order() { return fieldPlayer == null ? null : fieldPlayer.currentAction(); }
+
+    /** True on a field player whose coordinator has gone quiet: act on own beliefs. */
+    public boolean coordinatorQuiet() {
+        return fieldPlayer != null && fieldPlayer.mode() == FieldPlayer.Mode.AUTONOMOUS;
+    }
+}

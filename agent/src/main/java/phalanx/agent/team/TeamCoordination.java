@@ -1,0 +1,92 @@
+package phalanx.agent.team;
+
+import phalanx.comm.perception.PlayMode;
+import phalanx.comm.perception.Side;
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ActionId;
+import phalanx.comm.team.CoordinationProcedure;
+import phalanx.comm.team.RoundReports;
+import phalanx.comm.team.TeamMessage;
+import phalanx.coordination.Assignment;
+import phalanx.coordination.Coordinator;
+import phalanx.coordination.Memory;
+import phalanx.coordination.Mode;
+import phalanx.coordination.TeamPlan;
+import phalanx.coordination.beliefs.PlayerReport;
+import phalanx.coordination.beliefs.TeamBeliefs;
+import phalanx.localization.belief.WorldBelief;
+import phalanx.localization.field.FieldSpec;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
+import java.util.logging.Logger;
+
+/**
+ * The goalkeeper's side of chapter 5: when the team channel has a round's reports, add the
+ * goalkeeper's own, run the coordination (phalanx.coordination) and turn its assignments into the
+ * action messages field players carry out.
+ */
+public final class TeamCoordination implements CoordinationProcedure {
+    private static final Logger LOG = Logger.getLogger(TeamCoordination.class.getName());
+
+    private final Coordinator coordinator;
+    private final FieldSpec field;
+    private final int selfUnum;
+    private final Supplier<WorldBelief> ownBelief;
+    private final Supplier<PlayMode> playMode;
+    private final BooleanSupplier goalkeeperHasBall;
+    private Memory memory = Memory.NONE;
+    private TeamPlan lastPlan;
+
+    public TeamCoordination(Coordinator coordinator, FieldSpec field, int selfUnum, Supplier<WorldBelief> ownBelief,
+                            Supplier<PlayMode> playMode, BooleanSupplier goalkeeperHasBall) {
+        this.coordinator = coordinator;
+        this.field = field;
+        this.selfUnum = selfUnum;
+        this.ownBelief = ownBelief;
+        this.playMode = playMode;
+        this.goalkeeperHasBall = goalkeeperHasBall;
+    }
+
+    @Override public List<Action> actions(RoundReports round) {
+        WorldBelief me = ownBelief.get();
+        Side side = me == null || me.side() == null ? Side.LEFT : me.side();
+        List<PlayerReport> reports = new ArrayList<>();
+        reports.add(Reports.toCoordination(Reports.of(selfUnum, me)));
+        for (TeamMessage.Report r : round.reports().values()) {
+            if (r.sender() != selfUnum) reports.add(Reports.toCoordination(r));
+        }
+        Mode mode = Mode.of(playMode.get(), side, goalkeeperHasBall.getAsBoolean());
+        TeamPlan plan;
+        try {
+            plan = coordinator.coordinate(new TeamBeliefs(field, reports, me == null ? null : me.ballGlobal()), mode, memory);
+        } catch (RuntimeException e) {
+            // A bad round (a report the coordination refuses) must not stop the team: skip it.
+            LOG.warning("coordination round " + round.round() + " skipped: " + e.getMessage());
+            return List.of();
+        }
+        memory = plan.memory();
+        lastPlan = plan;
+        List<Action> out = new ArrayList<>();
+        for (PlayerReport r : reports) {
+            if (r.id() == selfUnum) continue;
+            Assignment a = plan.assignment(r.id());
+            if (a != null) out.add(order(a));
+        }
+        return out;
+    }
+
+    /** The last plan computed, for debug drawing; null before the first round. */
+    public TeamPlan lastPlan() { return lastPlan; }
+
+    static Action order(Assignment a) {
+        return switch (a.action()) {
+            case ON_BALL -> Action.of(a.id(), ActionId.ON_BALL);
+            case ACTIVE_POSITION, SUPPORT_POSITION -> Action.walkTo(a.id(), a.target().x(), a.target().y(), a.orientationDeg());
+            case LOCALIZE -> Action.of(a.id(), ActionId.TURN_TO_LOCALIZE);
+            case WAIT, GOALKEEPER -> Action.of(a.id(), ActionId.LOOK_STRAIGHT);
+        };
+    }
+}
