@@ -47,7 +47,14 @@ public final class TeamChannel {
         ChannelOutput out = coordinator != null ? coordinator.step(cycle, mode, heard)
                 : fieldPlayer.step(cycle, mode, heard, () -> Reports.of(unum, belief));
         for (ChannelEvent e : out.events()) {
-            if (!(e instanceof ChannelEvent.ActionReceived)) LOG.fine(() -> "team channel: " + e);
+            // Round boundaries at INFO (a few lines a second on the goalkeeper: the data for the
+            // channel's real-server figures); the rest at FINE.
+            if (e instanceof ChannelEvent.ReportsComplete || e instanceof ChannelEvent.ActionsDispatched
+                    || e instanceof ChannelEvent.RoundStarted || e instanceof ChannelEvent.PlayerInactive) {
+                LOG.info("team channel: " + e);
+            } else {
+                LOG.fine(() -> "team channel: " + e);
+            }
         }
         return out.say();
     }
