@@ -41,7 +41,7 @@ public final class ThinkLoop {
     private final PlayerParts parts;
     private final PerceptionParser parser = new PerceptionParser();
     private final EffectorMessage out = new EffectorMessage();
-    private final BeamPolicy beams = new BeamPolicy();
+    private final BeamPolicy beams;
     private final ThinkTimes times = new ThinkTimes();
     private PlayMode playMode;
     private double gameTime;
@@ -51,6 +51,7 @@ public final class ThinkLoop {
         this.connection = connection;
         this.options = options;
         this.parts = parts;
+        this.beams = new BeamPolicy(parts.field(), phalanx.coordination.CoordinationConfig.THESIS);
     }
 
     /** Runs until the connection ends; never throws for bad input. */
@@ -116,7 +117,7 @@ public final class ThinkLoop {
         String say = role == null ? null : role.channel().step(p.time(), playMode, p.hears(), belief);
         Decision d = role == null ? Decision.of(null, null) : role.brain().decide(s, role.channel());  // decide
 
-        Pose2 beam = beams.beam(playMode, p.time(), unum, options.players());                       // act
+        Pose2 beam = beams.beam(playMode, p.time(), unum);                       // act
         if (beam != null) {
             out.beam(beam.x(), beam.y(), beam.thetaDeg());
             parts.beliefs().forgetPose();

@@ -46,7 +46,7 @@ class ReplayEndToEndTest {
         assertEquals("(init (unum 1)(teamname Phalanx))(syn)", r.received().get(1));
         // S1 is BeforeKickOff throughout (20 s): a beam to player 1's kick-off spot as the reply to line 2,
         // repeated every 2 s while the mode lasts.
-        assertTrue(r.received().get(2).startsWith("(beam -14 0 0)"), r.received().get(2));
+        assertTrue(r.received().get(2).startsWith("(beam -14.5 0 0)"), r.received().get(2)); // GK of the kick-off formation
         long beams = r.received().stream().filter(m -> m.contains("(beam")).count();
         assertEquals(10, beams);
         assertEquals(0, r.repliesWithoutSyn());
