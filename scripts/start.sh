@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
-# start.sh [host] [port] [team] [--nine] [--log-dir DIR]
-# Starts the Phalanx team (11 players, or 9 with --nine for server 0.6.5) against rcssserver3d.
+# start.sh [host] [port] [team] [--nine] [--log-dir DIR] [--only "1 2 ..."]
+# Starts the Phalanx team (11 players, or 9 with --nine for server 0.6.5) against rcssserver3d;
+# --only starts just those uniform numbers (e.g. --only 1 for the goalkeeper test of thesis 6.3).
 # Installs the build tools if missing and builds first. Players connect one after another, each once
 # the previous one is in the game, so no two robots are created in the same cycle. Each player gets
 # its own log file; PIDs go to DIR/pids for scripts/stop.sh.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 
-host=127.0.0.1; port=3100; team=Phalanx; players=11; logdir=""
+host=127.0.0.1; port=3100; team=Phalanx; players=11; logdir=""; only=""
 pos=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --nine) players=9 ;;
     --log-dir) logdir="${2:?--log-dir needs a directory}"; shift ;;
+    --only) only="${2:?--only needs uniform numbers}"; shift ;;
     -h|--help) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "start.sh: unknown option $1" >&2; exit 2 ;;
     *) pos+=("$1") ;;
@@ -61,7 +63,14 @@ export PHALANX_TEAM_KEY="${PHALANX_TEAM_KEY:-$(head -c 12 /dev/urandom | od -An 
 jvm=(${PHALANX_JVM_OPTS:--Xms32m -Xmx96m -XX:+UseSerialGC -XX:TieredStopAtLevel=1 -XX:ReservedCodeCacheSize=24m -XX:MaxMetaspaceSize=48m -Xss512k -XX:-UsePerfData -Xshare:auto})
 
 : > "$logdir/pids"
-for unum in $(seq 1 "$players"); do
+unums=$(seq 1 "$players")
+if [ -n "$only" ]; then
+  for u in $only; do
+    [[ "$u" =~ ^[0-9]+$ ]] && [ "$u" -ge 1 ] && [ "$u" -le "$players" ] || { echo "start.sh: --only takes uniform numbers 1-$players, got '$u'" >&2; exit 2; }
+  done
+  unums="$only"
+fi
+for unum in $unums; do
   out="$logdir/player-$unum.out"
   nohup java "${jvm[@]}" -Xlog:gc:file="$logdir/gc-$unum.log":uptime,level -cp "$cp" phalanx.agent.Player \
     --host "$host" --port "$port" --team "$team" --unum "$unum" --players "$players" \
@@ -78,5 +87,5 @@ for unum in $(seq 1 "$players"); do
     tail -5 "$out" >&2
   fi
 done
-echo "start.sh: $players players of $team on $host:$port; logs and pids in $logdir"
+echo "start.sh: $(wc -l < "$logdir/pids") players of $team on $host:$port; logs and pids in $logdir"
 echo "start.sh: stop them with scripts/stop.sh $logdir"
