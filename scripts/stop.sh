@@ -14,7 +14,7 @@ stopped=0
 while read -r pid; do
   [ -n "$pid" ] || continue
   # Only a process that is still our player: a PID may have been reused since.
-  if [ -r "/proc/$pid/cmdline" ] && tr '\0' ' ' < "/proc/$pid/cmdline" | grep -q 'phalanx.agent.Player'; then
+  if [ -r "/proc/$pid/cmdline" ] && tr '\0' ' ' < "/proc/$pid/cmdline" | grep -q ' phalanx[.]agent[.]Player '; then
     kill "$pid" && stopped=$((stopped + 1))
   fi
 done < "$pids"
