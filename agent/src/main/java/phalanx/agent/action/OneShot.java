@@ -13,7 +13,7 @@ import phalanx.agent.decide.Situation;
  * motion controller restarts a one-shot motion that is still requested when it ends, and a kick
  * without a finalize phase would then play twice. Requesting nothing lets it play to its end.
  */
-final class OneShot {
+public final class OneShot {
     private final double timeout;
     private boolean active;
     private boolean began;
@@ -22,10 +22,10 @@ final class OneShot {
     private long completionsAtBegin;
     private double since;
 
-    OneShot(double timeoutSeconds) { this.timeout = timeoutSeconds; }
+    public OneShot(double timeoutSeconds) { this.timeout = timeoutSeconds; }
 
     /** Starts following a new play from this cycle. */
-    void start(Situation s) {
+    public void start(Situation s) {
         active = true;
         began = false;
         before = s.motion() == null ? null : s.motion().playing();
@@ -33,13 +33,13 @@ final class OneShot {
         since = s.now();
     }
 
-    boolean active() { return active; }
+    public boolean active() { return active; }
 
     /** True while the move must still be requested (the motion has not begun yet). */
-    boolean requesting() { return active && !began; }
+    public boolean requesting() { return active && !began; }
 
     /** Updates with this cycle's status; true once the play has ended (then inactive). */
-    boolean finished(Situation s) {
+    public boolean finished(Situation s) {
         if (!active) return true;
         Situation.MotionStatus m = s.motion() == null ? Situation.MotionStatus.IDLE : s.motion();
         if (!began) {
