@@ -1,0 +1,139 @@
+package phalanx.agent;
+
+import phalanx.motion.kinematics.LegGeometry;
+
+/**
+ * Every constant of the agent's actions (thesis 4.6) and goalkeeper (5.13), in one place. Defaults
+ * are the thesis's values where it gives one (the section is named); the others are marked
+ * "ours": chosen here, to be tuned in games (agent/README.md).
+ *
+ * @param head       head motion: Pan Head, Scan, Track Object
+ * @param beliefs    when a belief counts as fresh, usable or lost
+ * @param walk       walking and turning: Walk To Direction, Walk To Coordinate, Walk To Ball
+ * @param kick       Prepare For Kick and On Ball
+ * @param obstacles  Avoid Obstacles (Algorithm 2)
+ * @param keeper     the goalkeeper (5.13)
+ * @param fallback   the field player's own choice while the coordinator is quiet
+ */
+public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obstacles obstacles,
+                          Keeper keeper, Fallback fallback) {
+
+    /**
+     * @param panAmplitudeDeg  Pan Head / Scan yaw swing each side (ours: ±90° with the 120° field of
+     *                         view covers ±150° around the body; the neck allows ±120°, 4.6.2)
+     * @param panPeriodSeconds one full left-right-left sweep (ours; 180°/s keeps about 11° between
+     *                         two vision frames, well inside the 120° view)
+     * @param scanPitchDownDeg Scan tilts between 0 and this (negative = down; ours)
+     * @param legs             leg geometry for the camera height (Walk to Ball's forward kinematics, 4.6.2)
+     * @param leadSeconds      Track Moving Object aims this far ahead of a moving ball (ours: vision
+     *                         every 3 cycles plus one cycle of latency)
+     */
+    public record Head(double panAmplitudeDeg, double panPeriodSeconds, double scanPitchDownDeg,
+                       LegGeometry legs, double leadSeconds) {
+        public static final Head DEFAULT = new Head(90, 2.0, -35, LegGeometry.TYPE_0, 0.08);
+    }
+
+    /**
+     * @param ballFreshSeconds   the ball counts as "visible" when seen within this (ours: about 5 vision frames)
+     * @param ballLostSeconds    beyond this the ball is lost: On Ball starts again (ours)
+     * @param selfFreshSeconds   Turn To Localize: the self belief must be refreshed within this (ours)
+     * @param selfConfidence     ... and at least this confident (ours: EKF σ ≈ 0.2 m)
+     * @param selfUsableSeconds  walking to a coordinate trusts a self belief this old (ours; no odometry yet)
+     * @param playerMemorySeconds a seen player counts (obstacle, closer teammate) this long (ours)
+     */
+    public record Beliefs(double ballFreshSeconds, double ballLostSeconds, double selfFreshSeconds,
+                          double selfConfidence, double selfUsableSeconds, double playerMemorySeconds) {
+        public static final Beliefs DEFAULT = new Beliefs(0.3, 3.0, 0.5, 0.5, 3.0, 1.0);
+    }
+
+    /**
+     * @param leanBelowDeg        Walk To Direction leans below this heading error, turns above (4.6.2: 7°)
+     * @param gainMin             Turn Gain range (4.5.5: 0.3 .. 1.0) ...
+     * @param gainMax
+     * @param turnMinDeg          ... which turns 7 .. 40° per turn motion (4.5.5, Figure 4.10)
+     * @param turnMaxDeg
+     * @param positionTolerance   Walk To Coordinate: (x, y) reached within this (ours)
+     * @param thetaToleranceDeg   Walk To Coordinate: θ reached within this (ours)
+     * @param slowdownDistance    Walk Slowdown (4.5.5) within this of a target (ours)
+     * @param ballStopDistance    Walk To Ball stops this far from the ball (ours; Prepare For Kick does the rest)
+     * @param ballTurnToleranceDeg Turn To Ball is done within this (ours)
+     */
+    public record Walk(double leanBelowDeg, double gainMin, double gainMax, double turnMinDeg, double turnMaxDeg,
+                       double positionTolerance, double thetaToleranceDeg, double slowdownDistance,
+                       double ballStopDistance, double ballTurnToleranceDeg) {
+        public static final Walk DEFAULT = new Walk(7, 0.3, 1.0, 7, 40, 0.25, 10, 0.6, 0.28, 10);
+    }
+
+    /**
+     * @param spotX             the ball's place for a right-foot kick, forward of the torso (motions/README:
+     *                          kick.xml and the motion bench put it 0.17 m ahead ...)
+     * @param spotY             ... and 0.055 m to the right
+     * @param toleranceX        Prepare For Kick accepts the ball up to this much farther than spotX (ours;
+     *                          nearer is accepted: the foot's toe ends about 0.12 m ahead)
+     * @param toleranceY        ... and this much to either side (ours)
+     * @param restartDistance   On Ball starts again when the ball gets this far while preparing (ours: taken away)
+     * @param alignDegPerMetre  On Ball's alignment tolerance grows with the distance to the goal (4.6.2
+     *                          "inversely proportional" precision; the rate is ours) ...
+     * @param alignMinDeg       ... between this ...
+     * @param alignMaxDeg       ... and this (ours)
+     * @param strongBeyond      the strong kick beyond this distance to the opponent goal (ours)
+     * @param oneShotTimeout    a kick or dive that never shows as played ends after this (ours; a missing motion file)
+     */
+    public record Kick(double spotX, double spotY, double toleranceX, double toleranceY, double restartDistance,
+                       double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
+                       double oneShotTimeout) {
+        public static final Kick DEFAULT = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0);
+    }
+
+    /**
+     * @param range         obstacles within this are recorded (4.6.2: 2 m)
+     * @param clearance     escape angles pass an obstacle's centre at this distance (ours: two robots'
+     *                      half widths plus a margin)
+     * @param angleWeight   way point cost = angleWeight · |angle overhead in rad| + distance overhead (m)
+     *                      (4.6.2 names both overheads, not their weights; ours)
+     */
+    public record Obstacles(double range, double clearance, double angleWeight) {
+        public static final Obstacles DEFAULT = new Obstacles(2.0, 0.45, 0.5);
+    }
+
+    /**
+     * @param spotOffset        guard spot this far in front of the goal line (ours; coordination's GK spot too)
+     * @param diveSeconds       time from requesting a dive until the body covers the side (5.13 "the time
+     *                          it takes for our agent to fall"; ours until motion-bench measures dive_*.xml)
+     * @param postMargin        Threshold_Left/Right = goal half width + this (5.13; the margin is ours)
+     * @param bodyBlock         a ball crossing closer than this to the keeper's centre is left to the body (ours)
+     * @param ballDecay         rolling ball velocity decay rate, 1/s: v(t) = v0·e^(−k·t) (agent/README:
+     *                          from SimSpark's ball.rsg drag and measured; ours)
+     * @param minApproachSpeed  slower balls are not dived for (ours; tracker noise on a still ball)
+     * @param relocalizeDistance Guard goes back to Localize when this far off its spot (ours)
+     * @param liberoClearance   Libero only when no other player is this close to the ball (5.13 "no other
+     *                          agents near"; the distance is ours)
+     * @param liberoExitMargin  the ball is cleared when this far outside the goal area (ours)
+     */
+    public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
+                         double minApproachSpeed, double relocalizeDistance, double liberoClearance,
+                         double liberoExitMargin) {
+        public static final Keeper DEFAULT = new Keeper(0.5, 0.6, 0.15, 0.08, 1.05, 0.2, 0.7, 1.0, 0.5);
+    }
+
+    /**
+     * @param onBallDistance  while the coordinator is quiet a player goes On Ball when the ball is this
+     *                        near and no teammate is seen closer (ours; comm.team.FieldPlayer's fallback)
+     * @param hysteresis      a teammate must be this much closer to take the ball over (ours)
+     */
+    public record Fallback(double onBallDistance, double hysteresis) {
+        public static final Fallback DEFAULT = new Fallback(5.0, 0.5);
+    }
+
+    public static final AgentConfig DEFAULT = new AgentConfig(Head.DEFAULT, Beliefs.DEFAULT, Walk.DEFAULT,
+            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT);
+
+    public AgentConfig {
+        if (head == null || beliefs == null || walk == null || kick == null || obstacles == null
+                || keeper == null || fallback == null) {
+            throw new IllegalArgumentException("every part of the agent config is required");
+        }
+    }
+
+    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback); }
+}

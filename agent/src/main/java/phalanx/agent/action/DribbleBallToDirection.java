@@ -1,0 +1,63 @@
+package phalanx.agent.action;
+
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Action;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.Move;
+import phalanx.agent.decide.Situation;
+import phalanx.localization.field.Angles;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+/**
+ * 4.6.2 Dribble Ball To Direction: Walk To Direction with the ball kept in front of the feet. Away
+ * from the ball it walks to it; at the ball with the heading off by more than twice Walk To
+ * Direction's 7° it goes round the ball (side steps and turns); otherwise it walks on, leaning
+ * toward the heading and toward the ball so the ball stays between the feet. The thesis calls its
+ * own version "not fully functional"; so is this one until it is tuned in the server.
+ */
+public final class DribbleBallToDirection implements Action {
+    /** The ball counts as "at the feet" within this ahead ... */
+    private static final double AT_FEET_AHEAD = 0.35;
+    /** ... and this to either side. */
+    private static final double AT_FEET_SIDE = 0.15;
+    /** Lateral ball offset that gives full lean toward it. */
+    private static final double FULL_LEAN_OFFSET = 0.1;
+
+    private final AgentConfig config;
+    private final WalkToBall walk;
+    private final TurnToLocalize localize;
+    private final Orbit orbit;
+    private final TrackObject track;
+    private double directionDeg;
+
+    public DribbleBallToDirection(AgentConfig config, double directionDeg) {
+        this.config = config;
+        this.walk = new WalkToBall(config);
+        this.localize = new TurnToLocalize(config);
+        this.orbit = new Orbit(config);
+        this.track = TrackObject.ball(config);
+        direction(directionDeg);
+    }
+
+    /** A new direction (own frame, degrees); a non-finite one is ignored. */
+    public void direction(double deg) { if (Double.isFinite(deg)) directionDeg = deg; }
+
+    public double direction() { return directionDeg; }
+
+    @Override
+    public Decision decide(Situation s) {
+        Vector2 ball = Facts.ball(s, config);
+        if (ball == null || !atFeet(ball)) return walk.decide(s);
+        Pose2 self = Facts.self(s, config);
+        if (self == null) return localize.decide(s);
+        double e = Angles.difference(directionDeg, self.thetaDeg());
+        if (Math.abs(e) > 2 * config.walk().leanBelowDeg()) return orbit.step(s, ball, e);
+        double lean = e / config.walk().leanBelowDeg() + ball.y() / FULL_LEAN_OFFSET;
+        return Decision.of(new Move.Walk(Facts.clamp(lean, -1, 1), false), track.head(s));
+    }
+
+    private static boolean atFeet(Vector2 ball) {
+        return ball.x() > 0 && ball.x() < AT_FEET_AHEAD && Math.abs(ball.y()) < AT_FEET_SIDE;
+    }
+}

@@ -1,0 +1,83 @@
+package phalanx.agent.action;
+
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Situation;
+import phalanx.localization.belief.WorldBelief;
+import phalanx.localization.fall.FallState;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+/**
+ * The belief questions every action asks, answered safely: a missing belief, a NaN or a ball never
+ * seen give "not known" (null or false), never an exception. Actions read the belief only through here.
+ */
+public final class Facts {
+    private Facts() {}
+
+    /** The ball relative to the body when seen within the lost time and finite, else null. */
+    public static Vector2 ball(Situation s, AgentConfig c) {
+        WorldBelief b = s.belief();
+        if (b == null || b.ballRelative() == null || !b.ballRelative().isFinite()) return null;
+        return b.ballAge() <= c.beliefs().ballLostSeconds() ? b.ballRelative() : null;
+    }
+
+    /** The ball relative to the body when seen just now (in view), else null. */
+    public static Vector2 ballInView(Situation s, AgentConfig c) {
+        WorldBelief b = s.belief();
+        if (b == null || b.ballRelative() == null || !b.ballRelative().isFinite()) return null;
+        return b.ballAge() <= c.beliefs().ballFreshSeconds() ? b.ballRelative() : null;
+    }
+
+    /** The ball in the own frame when known and finite, else null. */
+    public static Vector2 ballGlobal(Situation s, AgentConfig c) {
+        WorldBelief b = s.belief();
+        if (b == null || b.ballGlobal() == null || !b.ballGlobal().isFinite()) return null;
+        return b.ballAge() <= c.beliefs().ballLostSeconds() ? b.ballGlobal() : null;
+    }
+
+    /** The ball's velocity in the own frame, or null (not tracked, NaN). */
+    public static Vector2 ballVelocity(Situation s) {
+        WorldBelief b = s.belief();
+        if (b == null || b.ballVelocity() == null || !b.ballVelocity().isFinite()) return null;
+        return b.ballVelocity();
+    }
+
+    /** The self pose when it exists, is finite and was refreshed within the usable age, else null. */
+    public static Pose2 self(Situation s, AgentConfig c) {
+        WorldBelief b = s.belief();
+        if (b == null || !finite(b.self())) return null;
+        return b.selfAge() <= c.beliefs().selfUsableSeconds() ? b.self() : null;
+    }
+
+    /** True when the self belief is fresh and confident (Turn To Localize's goal). */
+    public static boolean selfLocalized(Situation s, AgentConfig c) {
+        WorldBelief b = s.belief();
+        return b != null && finite(b.self()) && b.selfAge() <= c.beliefs().selfFreshSeconds()
+                && b.selfConfidence() >= c.beliefs().selfConfidence();
+    }
+
+    /** The fall state, STANDING when unknown. */
+    public static FallState fall(Situation s) {
+        WorldBelief b = s.belief();
+        return b == null || b.fall() == null ? FallState.STANDING : b.fall();
+    }
+
+    /** The bearing of a body-relative point, degrees (+ left). */
+    public static double bearing(Vector2 relative) { return relative.angleDeg(); }
+
+    /** A point of the own frame relative to the body, or null without a self pose. */
+    public static Vector2 relative(Situation s, AgentConfig c, Vector2 global) {
+        Pose2 self = self(s, c);
+        return self == null || global == null ? null : self.toRelative(global);
+    }
+
+    static boolean finite(Pose2 p) {
+        return p != null && Double.isFinite(p.x()) && Double.isFinite(p.y()) && Double.isFinite(p.thetaDeg());
+    }
+
+    /** v clamped to [lo, hi]; NaN gives lo. */
+    static double clamp(double v, double lo, double hi) {
+        if (!(v >= lo)) return lo;
+        return Math.min(v, hi);
+    }
+}

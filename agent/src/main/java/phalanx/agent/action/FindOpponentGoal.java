@@ -1,0 +1,46 @@
+package phalanx.agent.action;
+
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Action;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.Move;
+import phalanx.agent.decide.Situation;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+/**
+ * 4.6.1 Find Opponent's Goal: Scan until the goal's direction is known. The goal posts are
+ * landmarks of the self-localization, so "the goal became visible" is read as "the self belief is
+ * fresh and confident": the goal's direction then follows from the pose (and stays right after
+ * the head has turned away).
+ */
+public final class FindOpponentGoal implements Action {
+    private final AgentConfig config;
+    private final Scan scan;
+
+    public FindOpponentGoal(AgentConfig config) {
+        this.config = config;
+        this.scan = new Scan(config);
+    }
+
+    @Override
+    public Decision decide(Situation s) {
+        if (!done(s)) return Decision.of(Move.STAND, scan.head(s));
+        Vector2 rel = Facts.relative(s, config, s.field().opponentGoal());
+        return Decision.of(Move.STAND, TrackObject.toward(rel, 0.4, s, config));
+    }
+
+    @Override
+    public boolean done(Situation s) { return Facts.selfLocalized(s, config) && s.field() != null; }
+
+    /**
+     * The opponent goal centre's direction as seen from a point of the own frame, relative to the
+     * body's heading (degrees, + left); NaN without a self pose.
+     */
+    public static double goalBearingFrom(Situation s, AgentConfig c, Vector2 from) {
+        Pose2 self = Facts.self(s, c);
+        if (self == null || from == null || s.field() == null) return Double.NaN;
+        Vector2 d = s.field().opponentGoal().minus(from);
+        return phalanx.localization.field.Angles.difference(d.angleDeg(), self.thetaDeg());
+    }
+}

@@ -1,0 +1,124 @@
+package phalanx.agent.action;
+
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Action;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.Situation;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+/**
+ * 4.6.2 On Ball, the state machine of Figure 4.14: Walk To Ball, Find Opponent's Goal, align with
+ * the goal (the tolerance grows with the distance to the goal: far away the ball only needs to
+ * leave our half), Prepare For Kick, kick (the strong kick far from the goal). Whenever the ball is
+ * lost or taken away it starts again from Walk To Ball.
+ */
+public final class OnBall implements Action {
+    public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK }
+
+    private final AgentConfig config;
+    private final WalkToBall walk;
+    private final FindOpponentGoal find;
+    private final Orbit orbit;
+    private final PrepareForKick prepare;
+    private final KickBall kick;
+    private State state = State.WALK_TO_BALL;
+    private int kicks;
+    private boolean justKicked;
+
+    public OnBall(AgentConfig config) {
+        this.config = config;
+        this.walk = new WalkToBall(config);
+        this.find = new FindOpponentGoal(config);
+        this.orbit = new Orbit(config);
+        this.prepare = new PrepareForKick(config);
+        this.kick = new KickBall(config);
+    }
+
+    public State state() { return state; }
+
+    /** Kicks played to their end since this action was created. */
+    public int kicks() { return kicks; }
+
+    @Override
+    public Decision decide(Situation s) {
+        justKicked = false;
+        Vector2 ball = Facts.ball(s, config);
+        if (state != State.KICK && lost(ball)) state = State.WALK_TO_BALL;
+        // Each state either acts or hands over to the next one in the same cycle; at most once round.
+        for (int i = 0; i < State.values().length + 1; i++) {
+            switch (state) {
+                case WALK_TO_BALL -> {
+                    if (!walk.done(s)) return walk.decide(s);
+                    state = State.FIND_GOAL;
+                }
+                case FIND_GOAL -> {
+                    if (!find.done(s)) return find.decide(s);
+                    state = State.ALIGN;
+                }
+                case ALIGN -> {
+                    double e = goalError(s);
+                    if (Double.isNaN(e)) { state = State.FIND_GOAL; return find.decide(s); }
+                    if (Math.abs(e) > tolerance(s)) return orbit.step(s, ball, e);
+                    state = State.PREPARE;
+                }
+                case PREPARE -> {
+                    double e = goalError(s);
+                    if (!Double.isNaN(e) && Math.abs(e) > 2 * tolerance(s)) { state = State.ALIGN; return orbit.step(s, ball, e); }
+                    if (!prepare.done(s)) return prepare.decide(s);
+                    state = State.KICK;
+                    kick.start(s, strong(s));
+                }
+                case KICK -> {
+                    if (!kick.done(s)) {
+                        Decision d = kick.decide(s);
+                        if (!kick.done(s)) return d;
+                    }
+                    kicks++;
+                    justKicked = true;
+                    state = State.WALK_TO_BALL;
+                    return walk.decide(s);
+                }
+            }
+        }
+        return walk.decide(s);
+    }
+
+    /** True in the cycle a kick has just ended. */
+    @Override
+    public boolean done(Situation s) { return justKicked; }
+
+    /** No ball, or (once at the ball) the ball got away: start again. */
+    private boolean lost(Vector2 ball) {
+        if (ball == null) return true;
+        return state != State.WALK_TO_BALL && ball.norm() > config.kick().restartDistance();
+    }
+
+    /** Heading error to the opponent goal's centre as seen from the ball (degrees, + left), NaN without a self pose. */
+    double goalError(Situation s) {
+        Vector2 from = Facts.ballGlobal(s, config);
+        Pose2 self = Facts.self(s, config);
+        if (from == null && self != null) from = self.position();
+        return FindOpponentGoal.goalBearingFrom(s, config, from);
+    }
+
+    /** Alignment tolerance: proportional to the ball's distance to the goal, within bounds. */
+    double tolerance(Situation s) {
+        AgentConfig.Kick k = config.kick();
+        double d = distanceToGoal(s);
+        if (Double.isNaN(d)) return k.alignMaxDeg();
+        return Facts.clamp(k.alignDegPerMetre() * d, k.alignMinDeg(), k.alignMaxDeg());
+    }
+
+    private double distanceToGoal(Situation s) {
+        Vector2 from = Facts.ballGlobal(s, config);
+        Pose2 self = Facts.self(s, config);
+        if (from == null && self != null) from = self.position();
+        return from == null || s.field() == null ? Double.NaN : from.distanceTo(s.field().opponentGoal());
+    }
+
+    private boolean strong(Situation s) {
+        double d = distanceToGoal(s);
+        return Double.isNaN(d) || d > config.kick().strongBeyond();
+    }
+}

@@ -1,0 +1,44 @@
+package phalanx.agent.action;
+
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Action;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.Move;
+import phalanx.agent.decide.Situation;
+import phalanx.localization.field.Vector2;
+
+/**
+ * 4.6.1 Prepare For Kick: side steps and slow forward steps only, until the ball lies in front of
+ * the right foot (the kick's spot) within the tolerances. Sideways first (a forward step with the
+ * ball off to the side would push it away), then forward.
+ */
+public final class PrepareForKick implements Action {
+    private final AgentConfig config;
+    private final TrackObject track;
+
+    public PrepareForKick(AgentConfig config) {
+        this.config = config;
+        this.track = TrackObject.ball(config);
+    }
+
+    @Override
+    public Decision decide(Situation s) {
+        Vector2 ball = Facts.ball(s, config);
+        if (ball == null || ready(ball)) return Decision.of(Move.STAND, track.head(s));
+        AgentConfig.Kick k = config.kick();
+        double ey = ball.y() - k.spotY();
+        if (Math.abs(ey) > k.toleranceY()) return Decision.of(new Move.SideStep(ey > 0), track.head(s));
+        return Decision.of(new Move.Walk(0, true), track.head(s));
+    }
+
+    @Override
+    public boolean done(Situation s) {
+        Vector2 ball = Facts.ball(s, config);
+        return ball != null && ready(ball);
+    }
+
+    private boolean ready(Vector2 ball) {
+        AgentConfig.Kick k = config.kick();
+        return ball.x() - k.spotX() <= k.toleranceX() && Math.abs(ball.y() - k.spotY()) <= k.toleranceY();
+    }
+}

@@ -1,0 +1,189 @@
+package phalanx.agent.goalkeeper;
+
+import phalanx.agent.AgentConfig;
+import phalanx.agent.action.Facts;
+import phalanx.agent.action.OnBall;
+import phalanx.agent.action.TrackMovingObject;
+import phalanx.agent.action.WalkToCoordinate;
+import phalanx.agent.decide.Action;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.Move;
+import phalanx.agent.decide.Situation;
+import phalanx.localization.belief.PlayerBelief;
+import phalanx.localization.belief.WorldBelief;
+import phalanx.localization.field.FieldSpec;
+import phalanx.localization.field.Pose2;
+import phalanx.localization.field.Vector2;
+
+import java.util.List;
+
+/**
+ * The goalkeeper's own behaviour, the finite state machine of thesis 5.13 (Figure 5.14):
+ * <pre>
+ * LOCALIZE  walk to the guard spot between the posts, facing the field      -> GUARD when there
+ * GUARD     track the moving ball; dive when it will cross the goal mouth    -> DIVING
+ *           within the dive time; ball in the goal area, nobody near it      -> LIBERO
+ *           pushed off the spot (and no shot coming)                         -> LOCALIZE
+ * LIBERO    On Ball: clear the ball out of the goal area                     -> LOCALIZE when cleared or lost
+ * DIVING    the dive plays to its end (the behaviour stands up afterwards)   -> LOCALIZE
+ * </pre>
+ * Ours beyond the thesis: a shot is also dived for while walking back in LOCALIZE (once near the
+ * spot), and DIVING is a state of its own so nothing interrupts the dive.
+ */
+public final class Goalkeeper implements Action {
+    public enum State { LOCALIZE, GUARD, LIBERO, DIVING }
+
+    private final AgentConfig config;
+    private final TrackMovingObject track;
+    private final Dive dive;
+    private WalkToCoordinate toSpot;
+    private OnBall libero;
+    private State state = State.LOCALIZE;
+
+    public Goalkeeper(AgentConfig config) {
+        this.config = config;
+        this.track = new TrackMovingObject(config);
+        this.dive = new Dive(config);
+    }
+
+    public State state() { return state; }
+
+    /** True while it is clearing the ball (Libero): the coordination's Support mode (5.2, 5.13). */
+    public boolean hasBall() { return state == State.LIBERO; }
+
+    /** True while a dive is requested or playing: nothing may interrupt it, not even Stand Up. */
+    public boolean diving() { return state == State.DIVING; }
+
+    @Override
+    public Decision decide(Situation s) {
+        return switch (state) {
+            case LOCALIZE -> localize(s);
+            case GUARD -> guard(s);
+            case LIBERO -> libero(s);
+            case DIVING -> diving(s);
+        };
+    }
+
+    private Decision localize(Situation s) {
+        WalkToCoordinate walk = walkToSpot(s);
+        if (nearSpot(s)) {
+            Decision d = tryDive(s);
+            if (d != null) return d;
+        }
+        if (walk.done(s)) {
+            state = State.GUARD;
+            return guard(s);
+        }
+        return walk.decide(s);
+    }
+
+    private Decision guard(Situation s) {
+        Decision d = tryDive(s);
+        if (d != null) return d;
+        if (liberoChance(s)) {
+            state = State.LIBERO;
+            libero = new OnBall(config);
+            return libero.decide(s);
+        }
+        if (!nearSpot(s)) {
+            state = State.LOCALIZE;
+            return walkToSpot(s).decide(s);
+        }
+        return Decision.of(Move.STAND, track.head(s));
+    }
+
+    private Decision libero(Situation s) {
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (ball == null || cleared(s.field(), ball)) {
+            state = State.LOCALIZE;
+            libero = null;
+            return walkToSpot(s).decide(s);
+        }
+        return libero.decide(s);
+    }
+
+    private Decision diving(Situation s) {
+        Decision d = dive.decide(s);
+        if (dive.done(s)) {
+            state = State.LOCALIZE;
+            return Decision.of(Move.STAND, track.head(s));
+        }
+        return d;
+    }
+
+    /** Starts a dive when a shot will cross the goal mouth within the dive time; null when none. */
+    private Decision tryDive(Situation s) {
+        Boolean left = shotSide(s);
+        if (left == null) return null;
+        state = State.DIVING;
+        dive.start(s, left);
+        return dive.decide(s);
+    }
+
+    /**
+     * Thesis 5.13, Guard: where the ball's path crosses our Y axis; when that point lies between
+     * Threshold_Right and Threshold_Left (the goal mouth plus a margin) and the rolling ball gets
+     * there within the dive time, dive to its side. Null for no dive (no ball, too slow, wide,
+     * not yet, or straight at the body).
+     */
+    Boolean shotSide(Situation s) {
+        Vector2 ball = Facts.ball(s, config);
+        Vector2 v = track.relativeVelocity(s);
+        AgentConfig.Keeper k = config.keeper();
+        if (ball == null || v == null || v.norm() < k.minApproachSpeed()) return null;
+        BallRoll.Crossing c = BallRoll.crossing(ball, v, k.ballDecay());
+        if (c == null || c.seconds() > k.diveSeconds()) return null;
+        if (!insideThresholds(s, c.lateral()) || Math.abs(c.lateral()) <= k.bodyBlock()) return null;
+        return c.lateral() > 0;
+    }
+
+    /** Threshold_Left/Right: the crossing point, put in the own frame, lies within the goal mouth plus the margin. */
+    private boolean insideThresholds(Situation s, double lateral) {
+        double half = (s.field() == null ? FieldSpec.V066 : s.field()).goalWidth() / 2 + config.keeper().postMargin();
+        Pose2 self = Facts.self(s, config);
+        if (self == null) return Math.abs(lateral) <= half;     // egocentric: assume we stand in the goal's middle
+        return Math.abs(self.toGlobal(new Vector2(0, lateral)).y()) <= half;
+    }
+
+    /** Libero: the ball inside our goal area and no other player near it. */
+    private boolean liberoChance(Situation s) {
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (ball == null || s.field() == null || !inGoalArea(s.field(), ball, 0)) return false;
+        WorldBelief b = s.belief();
+        return !anyoneNear(b.teammates(), b.time(), ball) && !anyoneNear(b.opponents(), b.time(), ball);
+    }
+
+    private boolean anyoneNear(List<PlayerBelief> players, double now, Vector2 ball) {
+        if (players == null) return false;
+        for (PlayerBelief p : players) {
+            if (p == null || p.global() == null || !(now - p.time() <= config.beliefs().playerMemorySeconds())) continue;
+            if (p.global().distanceTo(ball) <= config.keeper().liberoClearance()) return true;
+        }
+        return false;
+    }
+
+    private boolean cleared(FieldSpec f, Vector2 ball) {
+        return f == null || !inGoalArea(f, ball, config.keeper().liberoExitMargin());
+    }
+
+    /** Inside our goal area (the field's penalty box: 1.8 m deep, 3.9 m wide on 0.6.6+), grown by a margin. */
+    static boolean inGoalArea(FieldSpec f, Vector2 p, double margin) {
+        return p.x() <= -f.halfLength() + f.penaltyDepth() + margin && p.x() >= -f.halfLength() - margin
+                && Math.abs(p.y()) <= f.penaltyWidth() / 2 + margin;
+    }
+
+    private boolean nearSpot(Situation s) {
+        Pose2 self = Facts.self(s, config);
+        return self != null && s.field() != null
+                && self.position().distanceTo(spot(s.field())) <= config.keeper().relocalizeDistance();
+    }
+
+    private Vector2 spot(FieldSpec f) { return new Vector2(-f.halfLength() + config.keeper().spotOffset(), 0); }
+
+    private WalkToCoordinate walkToSpot(Situation s) {
+        Vector2 p = spot(s.field() == null ? FieldSpec.V066 : s.field());
+        if (toSpot == null) toSpot = new WalkToCoordinate(config, p.x(), p.y(), 0);
+        else toSpot.target(p.x(), p.y(), 0);
+        return toSpot;
+    }
+}

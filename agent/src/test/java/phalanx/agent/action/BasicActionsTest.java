@@ -1,0 +1,143 @@
+package phalanx.agent.action;
+
+import org.junit.jupiter.api.Test;
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.Move;
+import phalanx.localization.fall.FallState;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+class BasicActionsTest {
+    private static final AgentConfig C = AgentConfig.DEFAULT;
+
+    @Test
+    void turnToBallTurnsTowardTheBallsSide() {
+        TurnToBall t = new TurnToBall(C);
+        Move left = t.decide(World.at(0, 0, 0).ballRel(1, 1).situation()).move();
+        Move right = t.decide(World.at(0, 0, 0).ballRel(1, -1).situation()).move();
+        assertTrue(left instanceof Move.Turn l && l.left(), "ball to the left: " + left);
+        assertTrue(right instanceof Move.Turn r && !r.left(), "ball to the right: " + right);
+    }
+
+    @Test
+    void turnToBallGainGrowsWithTheAngleWithinTheThesisRange() {
+        TurnToBall t = new TurnToBall(C);
+        // Figure 4.10: gain 0.3 turns 7°, 1.0 turns 40°; 20° lies between.
+        double small = ((Move.Turn) t.decide(World.at(0, 0, 0).ballRel(1, Math.tan(Math.toRadians(12))).situation()).move()).gain();
+        double mid = ((Move.Turn) t.decide(World.at(0, 0, 0).ballRel(1, Math.tan(Math.toRadians(20))).situation()).move()).gain();
+        double big = ((Move.Turn) t.decide(World.at(0, 0, 0).ballRel(0, 1).situation()).move()).gain();
+        assertEquals(0.3 + 0.7 * 13 / 33, mid, 1e-9);
+        assertTrue(small < mid && mid < big);
+        assertEquals(1.0, big);
+    }
+
+    @Test
+    void turnToBallIsDoneWhenFacingIt() {
+        TurnToBall t = new TurnToBall(C);
+        var s = World.at(0, 0, 0).ballRel(2, 0.2).situation();     // 5.7°
+        assertTrue(t.done(s));
+        assertEquals(Move.STAND, t.decide(s).move());
+        assertFalse(t.done(World.at(0, 0, 0).situation()), "no ball: not done");
+    }
+
+    @Test
+    void lookForBallTurnsTowardWhereTheBallWasLastSeen() {
+        LookForBall l = new LookForBall(C);
+        Move never = l.decide(World.at(0, 0, 0).situation()).move();
+        assertTrue(never instanceof Move.Turn t && t.left());
+        World old = World.at(0, 0, 0).ballRel(1, -2);
+        old.ballAge = 5;                                         // seen long ago on the right
+        Move right = l.decide(old.situation()).move();
+        assertTrue(right instanceof Move.Turn t && !t.left());
+        var inView = World.at(0, 0, 0).ballRel(3, 0).situation();
+        assertTrue(l.done(inView));
+        assertEquals(Move.STAND, l.decide(inView).move());
+    }
+
+    @Test
+    void turnToLocalizeTurnsUntilTheSelfBeliefIsFreshAndConfident() {
+        TurnToLocalize t = new TurnToLocalize(C);
+        World stale = World.at(1, 1, 0);
+        stale.selfAge = 2;
+        assertTrue(t.decide(stale.situation()).move() instanceof Move.Turn);
+        World unsure = World.at(1, 1, 0);
+        unsure.confidence = 0.2;
+        assertFalse(t.done(unsure.situation()));
+        assertTrue(t.decide(World.lost().situation()).move() instanceof Move.Turn);
+        assertTrue(t.done(World.at(1, 1, 0).situation()));
+        assertEquals(Move.STAND, t.decide(World.at(1, 1, 0).situation()).move());
+    }
+
+    @Test
+    void findOpponentGoalScansUntilLocalizedThenKnowsTheBearing() {
+        FindOpponentGoal f = new FindOpponentGoal(C);
+        World stale = World.at(0, 0, 90);
+        stale.selfAge = 2;
+        assertFalse(f.done(stale.situation()));
+        var s = World.at(0, 0, 90).situation();    // facing +y; the goal (15, 0) lies 90° to the right
+        assertTrue(f.done(s));
+        assertEquals(-90, FindOpponentGoal.goalBearingFrom(s, C, new phalanx.localization.field.Vector2(0, 0)), 1e-9);
+        assertEquals(-90 - Math.toDegrees(Math.atan2(5, 15)),
+                FindOpponentGoal.goalBearingFrom(s, C, new phalanx.localization.field.Vector2(0, 5)), 1e-9);
+    }
+
+    @Test
+    void standUpPicksTheMotionForTheSideItLiesOn() {
+        assertEquals(new Move.StandUp(true), new StandUp(C).decide(World.at(0, 0, 0).fall(FallState.FALLEN_FRONT).situation()).move());
+        assertEquals(new Move.StandUp(false), new StandUp(C).decide(World.at(0, 0, 0).fall(FallState.FALLEN_BACK).situation()).move());
+        StandUp falling = new StandUp(C);
+        assertEquals(Move.STAND, falling.decide(World.at(0, 0, 0).fall(FallState.FALLING).situation()).move());
+        assertFalse(falling.done(World.at(0, 0, 0).fall(FallState.FALLING).situation()));
+        assertTrue(new StandUp(C).done(World.at(0, 0, 0).situation()));
+    }
+
+    @Test
+    void standUpPlaysTheMotionOnceThenRepeatsWhileStillDown() {
+        StandUp u = new StandUp(C);
+        World w = World.at(0, 0, 0).fall(FallState.FALLEN_BACK);
+        assertEquals(new Move.StandUp(false), u.decide(w.time(10).situation()).move());
+        // Not playing yet (one cycle of latency): still requested.
+        assertEquals(new Move.StandUp(false), u.decide(w.time(10.02).situation()).move());
+        // Playing: no longer requested, so the controller does not replay it at its end.
+        w.motion("stand_up_back", null, 0);
+        assertEquals(Move.STAND, u.decide(w.time(10.04).situation()).move());
+        w.fall(FallState.FALLING);                                     // rising: still busy
+        assertEquals(Move.STAND, u.decide(w.time(11).situation()).move());
+        assertTrue(u.busy());
+        // The motion ended with the robot still on its back: once more.
+        w.fall(FallState.FALLEN_BACK).motion(null, "stand_up_back", 1);
+        assertEquals(new Move.StandUp(false), u.decide(w.time(12.2).situation()).move());
+        w.motion("stand_up_back", "stand_up_back", 1);
+        u.decide(w.time(12.24).situation());
+        w.fall(FallState.STANDING).motion(null, "stand_up_back", 2);
+        assertEquals(Move.STAND, u.decide(w.time(14.5).situation()).move());
+        assertTrue(u.done(w.situation()));
+    }
+
+    @Test
+    void prepareForKickUsesSideStepsThenForwardStepsUntilTheBallIsAtTheRightFoot() {
+        PrepareForKick p = new PrepareForKick(C);
+        assertEquals(new Move.SideStep(true), p.decide(World.at(0, 0, 0).ballRel(0.25, 0.05).situation()).move());
+        assertEquals(new Move.SideStep(false), p.decide(World.at(0, 0, 0).ballRel(0.25, -0.12).situation()).move());
+        assertEquals(new Move.Walk(0, true), p.decide(World.at(0, 0, 0).ballRel(0.25, -0.06).situation()).move());
+        var ready = World.at(0, 0, 0).ballRel(0.18, -0.07).situation();
+        assertTrue(p.done(ready));
+        assertEquals(Move.STAND, p.decide(ready).move());
+        assertFalse(p.done(World.at(0, 0, 0).ballRel(0.21, -0.055).situation()), "4 cm too far");
+        assertFalse(p.done(World.at(0, 0, 0).ballRel(0.17, -0.02).situation()), "3.5 cm too far left");
+    }
+
+    @Test
+    void walkToBallWalksTurnsAndStops() {
+        WalkToBall w = new WalkToBall(C);
+        Decision far = w.decide(World.at(0, 0, 0).ballRel(3, -0.055).situation());
+        assertEquals(new Move.Walk(0, false), far.move(), "aims the right foot at the ball: straight on");
+        assertTrue(w.decide(World.at(0, 0, 0).ballRel(0, 2).situation()).move() instanceof Move.Turn t && t.left());
+        assertTrue(((Move.Walk) w.decide(World.at(0, 0, 0).ballRel(0.5, -0.055).situation()).move()).slow());
+        var close = World.at(0, 0, 0).ballRel(0.2, -0.05).situation();
+        assertTrue(w.done(close));
+        assertEquals(Move.STAND, w.decide(close).move());
+        assertTrue(w.decide(World.at(0, 0, 0).situation()).move() instanceof Move.Turn, "no ball: looks for it");
+    }
+}
