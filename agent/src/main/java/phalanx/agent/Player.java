@@ -1,5 +1,7 @@
 package phalanx.agent;
 
+import phalanx.agent.action.FieldPlayerBehaviour;
+import phalanx.agent.goalkeeper.GoalkeeperBehaviour;
 import phalanx.agent.roboviz.RoboViz;
 import phalanx.agent.team.TeamChannel;
 import phalanx.agent.team.TeamCoordination;
@@ -7,6 +9,7 @@ import phalanx.comm.team.ChannelConfig;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.wire.ServerConnection;
 import phalanx.comm.wire.WireException;
+import phalanx.coordination.CoordinationConfig;
 import phalanx.coordination.Coordinator;
 import phalanx.localization.LocalizationConfig;
 import phalanx.localization.belief.BeliefStore;
@@ -90,11 +93,13 @@ public final class Player {
         TeamKey key = teamKey(o.team());
         return new PlayerParts(beliefs, new MotionController(library, MotionConfig.DEFAULT), field, draw, (unum, self) -> {
             if (unum == channel.coordinator()) {
+                GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(AgentConfig.DEFAULT));
                 TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,
-                        self::playMode, () -> false);
-                return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), new InterimBrain());
+                        self::playMode, keeper::hasBall);
+                return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
             }
-            return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum), new InterimBrain());
+            return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum),
+                    new FieldBrain(new FieldPlayerBehaviour(AgentConfig.DEFAULT), unum, o.players(), CoordinationConfig.THESIS));
         });
     }
 
