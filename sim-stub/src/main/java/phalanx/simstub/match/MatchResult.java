@@ -13,8 +13,10 @@ import java.util.List;
  * What {@code scripts/match} writes at the end of a game (one JSON file): the score, the goals with
  * their game time, the play-mode timeline, each team's players that never connected or disconnected,
  * and how the processes ended. {@code completed} is true only when the server reached GameOver.
+ * {@code playWallSeconds}: wall time from the first kick-off to the end; against {@code gameTime} it
+ * says whether the machine kept real time (in agent-sync mode the game slows down instead of dropping cycles).
  */
-public record MatchResult(boolean completed, String reason, String started, double wallSeconds,
+public record MatchResult(boolean completed, String reason, String started, double wallSeconds, Double playWallSeconds,
                           ServerInfo server, double halfTime, int halves, double gameTime,
                           TeamResult left, TeamResult right, List<Goal> goals,
                           List<ModeChange> playModes, List<RosterEvent> rosterEvents) {

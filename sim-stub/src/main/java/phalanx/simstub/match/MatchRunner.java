@@ -40,6 +40,8 @@ public final class MatchRunner {
     private final String started = Instant.now().toString();
     private volatile boolean serverDiedDuringGame;
     private volatile String abortReason = "interrupted";
+    private volatile long kickOffNanos;
+    private volatile long endNanos;
     private MatchResult result;
 
     /** A team while the match runs. */
@@ -109,6 +111,10 @@ public final class MatchRunner {
             waitForPlayers(t, before, presentBefore);
             if (!server.alive()) return "server died while " + t.command.label() + " connected (exit " + server.exitCode() + ")";
             if (streamEnded) return "monitor stream ended while " + t.command.label() + " connected";
+            double silent = (System.nanoTime() - lastMessageNanos) / 1e9;
+            if (silent > cfg.stall()) {
+                return "server stalled while " + t.command.label() + " connected: no monitor message for " + (int) silent + " s";
+            }
         }
         for (Team t : teams) {
             if (t.side == null) return "team " + t.command.label() + " has no players on the field"
@@ -128,6 +134,7 @@ public final class MatchRunner {
             }
             String side = half == 1 ? "Left" : "Right";
             monitor.kickOff(side);
+            if (half == 1) kickOffNanos = System.nanoTime();
             say("half %d: kick-off %s at game time %.1f", half, side, follower.state().time());
             if (half == 1 && cfg.server().halves() == 2) {
                 String e = waitFor(() -> follower.state().half() == 2 || follower.gameOver(), "the end of the first half");
@@ -136,6 +143,7 @@ public final class MatchRunner {
         }
         String e = waitFor(follower::gameOver, "the end of the game");
         if (e != null) return e;
+        endNanos = System.nanoTime();
         MatchState s = follower.state();
         say("game over at %.1f: %s %d:%d %s", s.time(), label(Side.LEFT), s.scoreLeft(), s.scoreRight(), label(Side.RIGHT));
         return null;
@@ -205,6 +213,7 @@ public final class MatchRunner {
             if (now > before && quiet > cfg.connectQuiet()) break;
             if (sinceStart > cfg.connectTimeout()) break;
             if (!t.process.anyAlive() && quiet > 3) break; // nothing left that could still connect
+            if ((System.nanoTime() - lastMessageNanos) / 1e9 > cfg.stall()) break; // the server hangs
             pause(0.2);
         }
         // The team's side: the side that gained players while it connected.
@@ -294,7 +303,8 @@ public final class MatchRunner {
         ServerInfo info = new ServerInfo(cfg.server().agentPort(), cfg.server().monitorPort(), cfg.server().sync(),
                 cfg.server().realTime(), cfg.dir().resolve("server.log").toString(), sv == null ? null : sv.exitCode(),
                 serverDiedDuringGame);
-        return new MatchResult(completed, reason, started, Math.round((System.nanoTime() - startNanos) / 1e8) / 10.0, info,
+        Double play = kickOffNanos == 0 ? null : Math.round(((endNanos != 0 ? endNanos : System.nanoTime()) - kickOffNanos) / 1e8) / 10.0;
+        return new MatchResult(completed, reason, started, Math.round((System.nanoTime() - startNanos) / 1e8) / 10.0, play, info,
                 follower.halfTime(), cfg.server().halves(), s.time(), bySide[0], bySide[1], follower.goals(),
                 follower.timeline(), follower.rosterEvents());
     }
