@@ -36,7 +36,9 @@ public final class ThinkLoop {
     public Outcome run() {
         FrameReader in = connection.reader();
         try {
-            connection.send(EffectorMessage.scene(options.robotType()));
+            // The syn after the scene matters in agent-sync mode: the server waits for a new agent's
+            // syn before the next step, and sends nothing until it steps (docs/protocol.md).
+            connection.send(EffectorMessage.scene(options.robotType()) + "(syn)");
             while (true) {
                 in.next();
                 long start = System.nanoTime();

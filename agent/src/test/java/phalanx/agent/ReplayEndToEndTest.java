@@ -42,7 +42,7 @@ class ReplayEndToEndTest {
         assertNull(r.error());
         assertEquals(s1.size(), r.linesSent());
         assertEquals(s1.size() + 1, r.received().size(), "scene plus one reply per perceptor line");
-        assertEquals("(scene rsg/agent/nao/nao_hetero.rsg 0)", r.received().get(0));
+        assertEquals("(scene rsg/agent/nao/nao_hetero.rsg 0)(syn)", r.received().get(0));
         assertEquals("(init (unum 1)(teamname Phalanx))(syn)", r.received().get(1));
         // S1 is BeforeKickOff throughout (20 s): a beam to player 1's kick-off spot as the reply to line 2,
         // repeated every 2 s while the mode lasts.
