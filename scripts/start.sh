@@ -27,8 +27,18 @@ done
 [ ${#pos[@]} -ge 4 ] && { echo "start.sh: too many arguments: ${pos[*]}" >&2; exit 2; }
 [[ "$port" =~ ^[0-9]+$ ]] || { echo "start.sh: port must be a number, got '$port'" >&2; exit 2; }
 
-# Is a server listening? Say how to get one if not.
-if ! (exec 3<>"/dev/tcp/$host/$port") 2>/dev/null; then
+# Is a server listening? Say how to get one if not. On this machine look the port up in the kernel's
+# table instead of connecting: in agent-sync mode a probe connection that never sends (syn) would
+# stall the server (docs/protocol.md). A remote server is probed with a connection.
+listening() {
+  case "$host" in
+    127.*|localhost|::1)
+      local hex; hex=$(printf '%04X' "$port")
+      cat /proc/net/tcp /proc/net/tcp6 2>/dev/null | awk -v p=":$hex" '$4 == "0A" && substr($2, length($2) - 4) == p { found = 1 } END { exit !found }' ;;
+    *) (exec 3<>"/dev/tcp/$host/$port") 2>/dev/null ;;
+  esac
+}
+if ! listening; then
   cat >&2 <<MSG
 start.sh: no rcssserver3d is listening on $host:$port.
   Start one first (rcssserver3d, or rcssserver3d --agent-port $port --server-port M).
