@@ -109,11 +109,13 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param liberoClearance   Libero only when no other player is this close to the ball (5.13 "no other
      *                          agents near"; the distance is ours)
      * @param liberoExitMargin  the ball is cleared when this far outside the goal area (ours)
+     * @param liberoMaxSpeed    Libero only for a ball slower than this (ours: a shot rolling through
+     *                          the goal area is Guard's business)
      */
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,
-                         double liberoExitMargin) {
-        public static final Keeper DEFAULT = new Keeper(0.5, 0.6, 0.15, 0.08, 1.05, 0.2, 0.7, 1.0, 0.5);
+                         double liberoExitMargin, double liberoMaxSpeed) {
+        public static final Keeper DEFAULT = new Keeper(0.5, 0.6, 0.15, 0.08, 1.05, 0.2, 0.7, 1.0, 0.5, 1.0);
     }
 
     /**
