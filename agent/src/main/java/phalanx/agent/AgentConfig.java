@@ -138,4 +138,11 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     }
 
     public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback); }
+
+    /** The defaults with the leg geometry of this robot type (the camera height for Track Object). */
+    public static AgentConfig forRobotType(int type) {
+        Head h = new Head(Head.DEFAULT.panAmplitudeDeg(), Head.DEFAULT.panPeriodSeconds(), Head.DEFAULT.scanPitchDownDeg(),
+                LegGeometry.forType(type), Head.DEFAULT.leadSeconds());
+        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT);
+    }
 }
