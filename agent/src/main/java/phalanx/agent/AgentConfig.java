@@ -102,18 +102,20 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          it takes for our agent to fall"; ours until motion-bench measures dive_*.xml)
      * @param postMargin        Threshold_Left/Right = goal half width + this (5.13; the margin is ours)
      * @param bodyBlock         a ball crossing closer than this to the keeper's centre is left to the body (ours)
-     * @param ballDecay         rolling ball velocity decay rate, 1/s: v(t) = v0·e^(−k·t) (agent/README:
-     *                          from SimSpark's ball.rsg drag and measured; ours)
+     * @param ballDecay         rolling ball velocity decay rate, 1/s: v(t) = v0·e^(−k·t) (ours: 1.053
+     *                          derived from SimSpark's ball.rsg drag, 1.062 measured by scripts/ball-decay)
      * @param minApproachSpeed  slower balls are not dived for (ours; tracker noise on a still ball)
      * @param relocalizeDistance Guard goes back to Localize when this far off its spot (ours)
      * @param liberoClearance   Libero only when no other player is this close to the ball (5.13 "no other
      *                          agents near"; the distance is ours)
      * @param liberoExitMargin  the ball is cleared when this far outside the goal area (ours)
+     * @param liberoMaxSpeed    Libero only for a ball slower than this (ours: a shot rolling through
+     *                          the goal area is Guard's business)
      */
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,
-                         double liberoExitMargin) {
-        public static final Keeper DEFAULT = new Keeper(0.5, 0.6, 0.15, 0.08, 1.05, 0.2, 0.7, 1.0, 0.5);
+                         double liberoExitMargin, double liberoMaxSpeed) {
+        public static final Keeper DEFAULT = new Keeper(0.5, 0.6, 0.15, 0.08, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0);
     }
 
     /**
@@ -136,4 +138,11 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     }
 
     public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback); }
+
+    /** The defaults with the leg geometry of this robot type (the camera height for Track Object). */
+    public static AgentConfig forRobotType(int type) {
+        Head h = new Head(Head.DEFAULT.panAmplitudeDeg(), Head.DEFAULT.panPeriodSeconds(), Head.DEFAULT.scanPitchDownDeg(),
+                LegGeometry.forType(type), Head.DEFAULT.leadSeconds());
+        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT);
+    }
 }

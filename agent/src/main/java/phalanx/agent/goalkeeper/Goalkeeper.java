@@ -22,13 +22,13 @@ import java.util.List;
  * <pre>
  * LOCALIZE  walk to the guard spot between the posts, facing the field      -> GUARD when there
  * GUARD     track the moving ball; dive when it will cross the goal mouth    -> DIVING
- *           within the dive time; ball in the goal area, nobody near it      -> LIBERO
+ *           within the dive time; ball (still) in the goal area, nobody near -> LIBERO
  *           pushed off the spot (and no shot coming)                         -> LOCALIZE
  * LIBERO    On Ball: clear the ball out of the goal area                     -> LOCALIZE when cleared or lost
  * DIVING    the dive plays to its end (the behaviour stands up afterwards)   -> LOCALIZE
  * </pre>
- * Ours beyond the thesis: a shot is also dived for while walking back in LOCALIZE (once near the
- * spot), and DIVING is a state of its own so nothing interrupts the dive.
+ * Ours beyond the thesis: a shot is also dived for in LOCALIZE and LIBERO while near the spot;
+ * Libero waits for a (nearly) still ball; DIVING is a state of its own so nothing interrupts the dive.
  */
 public final class Goalkeeper implements Action {
     public enum State { LOCALIZE, GUARD, LIBERO, DIVING }
@@ -93,6 +93,10 @@ public final class Goalkeeper implements Action {
     }
 
     private Decision libero(Situation s) {
+        if (nearSpot(s)) {
+            Decision d = tryDive(s);
+            if (d != null) { libero = null; return d; }
+        }
         Vector2 ball = Facts.ballGlobal(s, config);
         if (ball == null || cleared(s.field(), ball)) {
             state = State.LOCALIZE;
@@ -145,10 +149,12 @@ public final class Goalkeeper implements Action {
         return Math.abs(self.toGlobal(new Vector2(0, lateral)).y()) <= half;
     }
 
-    /** Libero: the ball inside our goal area and no other player near it. */
+    /** Libero: the ball inside our goal area, (nearly) still, and no other player near it. */
     private boolean liberoChance(Situation s) {
         Vector2 ball = Facts.ballGlobal(s, config);
         if (ball == null || s.field() == null || !inGoalArea(s.field(), ball, 0)) return false;
+        Vector2 v = Facts.ballVelocity(s);
+        if (v != null && v.norm() >= config.keeper().liberoMaxSpeed()) return false;
         WorldBelief b = s.belief();
         return !anyoneNear(b.teammates(), b.time(), ball) && !anyoneNear(b.opponents(), b.time(), ball);
     }

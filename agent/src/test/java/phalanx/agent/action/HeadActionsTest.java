@@ -50,6 +50,15 @@ class HeadActionsTest {
     }
 
     @Test
+    void aTallerRobotTypeLooksDownMore() {
+        // Type 3: legs 0.1479 + 0.1279 m instead of 0.12 + 0.10: camera at 0.5958 m.
+        HeadTarget t3 = TrackObject.ball(AgentConfig.forRobotType(3)).head(World.at(0, 0, 0).ballRel(1, 0).situation());
+        assertEquals(-Math.toDegrees(Math.atan2(0.115 + 0.147868424 + 0.127868424 + 0.05 + 0.155 - 0.042, 1)), t3.pitchDeg(), 1e-6);
+        var e = assertThrows(IllegalArgumentException.class, () -> AgentConfig.forRobotType(7));
+        assertEquals("robot type must be 0-4 (or -1 for nao.rsg), got 7", e.getMessage());
+    }
+
+    @Test
     void trackObjectPansWithoutTheObject() {
         TrackObject t = TrackObject.ball(C);
         World w = World.at(0, 0, 0).time(11.0);    // ball never seen

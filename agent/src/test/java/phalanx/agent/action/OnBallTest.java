@@ -1,0 +1,87 @@
+package phalanx.agent.action;
+
+import org.junit.jupiter.api.Test;
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Move;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** Figure 4.14 driven by a scripted ball: walk, find the goal, align, prepare, kick, start again. */
+class OnBallTest {
+    private static final AgentConfig C = AgentConfig.DEFAULT;
+
+    @Test
+    void goesThroughItsStatesInOrder() {
+        OnBall a = new OnBall(C);
+        // 1. Ball 2 m ahead (in front of the right foot): walk.
+        assertEquals(new Move.Walk(0, false), a.decide(World.at(0, 0, 0).ballRel(2, -0.055).time(10).situation()).move());
+        assertEquals(OnBall.State.WALK_TO_BALL, a.state());
+
+        // 2. At the ball, but the self belief is 2 s old: find the goal (stand, scan).
+        World stale = World.at(0, 0, 90).ballRel(0.25, -0.055).time(12);
+        stale.selfAge = 2;
+        assertEquals(Move.STAND, a.decide(stale.situation()).move());
+        assertEquals(OnBall.State.FIND_GOAL, a.state());
+
+        // 3. Localized facing +y: the goal lies 91° to the right; go round the ball (step left).
+        assertEquals(new Move.SideStep(true), a.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).time(12.5).situation()).move());
+        assertEquals(OnBall.State.ALIGN, a.state());
+        //    The side step left the ball 20° to the right: turn back to it before the next step.
+        Move back = a.decide(World.at(0, 0, 90).ballRel(0.25, -0.09).time(13).situation()).move();
+        assertTrue(back instanceof Move.Turn t && !t.left(), back.toString());
+
+        // 4. Facing the goal, ball 0.25 m ahead: aligned, so prepare (slow forward step).
+        assertEquals(new Move.Walk(0, true), a.decide(World.at(0, 0, 0).ballRel(0.25, -0.055).time(14).situation()).move());
+        assertEquals(OnBall.State.PREPARE, a.state());
+
+        // 5. Ball at the right foot, 15 m from the goal: the strong kick, requested until it plays.
+        World kick = World.at(0, 0, 0).ballRel(0.17, -0.055).time(15);
+        assertEquals(new Move.Kick(true), a.decide(kick.situation()).move());
+        assertEquals(OnBall.State.KICK, a.state());
+        kick.motion("strong_kick", null, 0).time(15.04);
+        assertEquals(Move.STAND, a.decide(kick.situation()).move(), "playing: not requested again");
+        assertFalse(a.done(kick.situation()));
+
+        // 6. The kick ended, the ball is gone: one kick, and back to walking to the ball.
+        World after = World.at(0, 0, 0).ballRel(4, 0).motion(null, "strong_kick", 1).time(16.5);
+        assertTrue(a.decide(after.situation()).move() instanceof Move.Walk);
+        assertEquals(1, a.kicks());
+        assertTrue(a.done(after.situation()));
+        assertEquals(OnBall.State.WALK_TO_BALL, a.state());
+    }
+
+    @Test
+    void startsAgainWhenTheBallIsTakenAwayOrLost() {
+        OnBall a = new OnBall(C);
+        a.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation());
+        assertEquals(OnBall.State.ALIGN, a.state());
+        a.decide(World.at(0, 0, 90).ballRel(1.5, 0.5).situation());            // an opponent took it
+        assertEquals(OnBall.State.WALK_TO_BALL, a.state());
+
+        OnBall b = new OnBall(C);
+        b.decide(World.at(0, 0, 0).ballRel(0.25, -0.055).situation());
+        assertEquals(OnBall.State.PREPARE, b.state());
+        World gone = World.at(0, 0, 0).ballRel(0.25, -0.055);
+        gone.ballAge = 10;                                                         // not seen for 10 s
+        assertTrue(b.decide(gone.situation()).move() instanceof Move.Turn, "looks for it");
+        assertEquals(OnBall.State.WALK_TO_BALL, b.state());
+    }
+
+    @Test
+    void nearTheGoalItKicksNormallyAndAlignsMorePrecisely() {
+        OnBall a = new OnBall(C);
+        // 2 m from the goal: tolerance 2.5°/m × 2 m = 5°, raised to the 10° minimum; 25 m away: 45° cap.
+        assertEquals(10, a.tolerance(World.at(12.8, 0, 0).ballRel(0.2, 0).situation()), 1e-9);
+        assertEquals(45, a.tolerance(World.at(-10.2, 0, 0).ballRel(0.2, 0).situation()), 1e-9);
+        assertEquals(25, a.tolerance(World.at(4.8, 0, 0).ballRel(0.2, 0).situation()), 1e-6);
+        // Facing 20° left of the goal 2 m away: not aligned near the goal, aligned far from it.
+        // (the ball lies 18° to the right, so the orbit turns back to it first)
+        Move m = a.decide(World.at(12.83, 0, 20).ballRel(0.17, -0.055).situation()).move();
+        assertTrue(m instanceof Move.Turn t && !t.left(), m.toString());
+        assertEquals(OnBall.State.ALIGN, a.state());
+        OnBall far = new OnBall(C);
+        assertEquals(new Move.Kick(true), far.decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
+        OnBall near = new OnBall(C);
+        assertEquals(new Move.Kick(false), near.decide(World.at(11, 0, 0).ballRel(0.17, -0.055).situation()).move());
+    }
+}

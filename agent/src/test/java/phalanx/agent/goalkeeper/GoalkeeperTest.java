@@ -1,0 +1,122 @@
+package phalanx.agent.goalkeeper;
+
+import org.junit.jupiter.api.Test;
+import phalanx.agent.AgentConfig;
+import phalanx.agent.action.World;
+import phalanx.agent.decide.Move;
+import phalanx.localization.fall.FallState;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** Thesis 5.13 with the keeper on its spot (-14.5, 0) facing the field, dive time 0.6 s, k = 1.06 /s. */
+class GoalkeeperTest {
+    private static final AgentConfig C = AgentConfig.DEFAULT;
+
+    /** A keeper already in GUARD on its spot. */
+    private static Goalkeeper guarding() {
+        Goalkeeper k = new Goalkeeper(C);
+        k.decide(World.at(-14.5, 0, 0).ballAt(0, 0).situation());
+        assertEquals(Goalkeeper.State.GUARD, k.state());
+        return k;
+    }
+
+    private static World shot(double bx, double by, double vx, double vy) {
+        return World.at(-14.5, 0, 0).ballAt(-14.5 + bx, by).ballVelocity(vx, vy);
+    }
+
+    @Test
+    void divesToTheSideTheBallWillCross() {
+        // 1 m out, 0.4 m left, (-3, 0.2) m/s: e^(-kt) = 1 - 1.06/3 = 0.647, t = 0.41 s <= 0.6 s; crosses at y = 0.467.
+        Goalkeeper left = guarding();
+        assertEquals(new Move.Dive(true), left.decide(shot(1, 0.4, -3, 0.2).situation()).move());
+        assertEquals(Goalkeeper.State.DIVING, left.state());
+        Goalkeeper right = guarding();
+        assertEquals(new Move.Dive(false), right.decide(shot(1, -0.4, -3, -0.2).situation()).move());
+    }
+
+    @Test
+    void noDiveForAWideSlowDistantOrCentralBall() {
+        // Wide: crosses at y = 1.6 m, outside the post (1.05) plus margin (0.15).
+        assertNoDive(shot(1, 1.4, -3, 0.6));
+        // Too slow: reach 0.5 / 1.06 = 0.47 m, it stops before the line.
+        assertNoDive(shot(1, 0.4, -0.5, 0));
+        // Not yet: 3 m out at 6 m/s, t = -ln(1 - 1.06 * 3 / 6) / 1.06 = 0.71 s > 0.6 s.
+        assertNoDive(shot(3, 0.5, -6, 0));
+        // ... but 2.5 m out at 6 m/s it is t = -ln(1 - 1.06 * 2.5 / 6) / 1.06 = 0.55 s: dive.
+        assertEquals(new Move.Dive(true), guarding().decide(shot(2.5, 0.5, -6, 0).situation()).move());
+        // Straight at the body (|y| <= 0.08 m): the body blocks it.
+        assertNoDive(shot(1, 0.05, -3, 0));
+        // Rolling away.
+        assertNoDive(shot(1, 0.4, 3, 0));
+        // Without a self pose the ball's velocity cannot be put in the body frame: no dive.
+        World lost = World.lost().ballRel(1, 0.4).ballVelocity(-3, 0.2);
+        assertNoDive(lost);
+    }
+
+    private static void assertNoDive(World w) {
+        Goalkeeper k = guarding();
+        Move m = k.decide(w.situation()).move();
+        assertFalse(m instanceof Move.Dive, m.toString());
+        assertNotEquals(Goalkeeper.State.DIVING, k.state());
+    }
+
+    @Test
+    void theDivePlaysOnceThenTheKeeperLocalizesAgain() {
+        Goalkeeper k = guarding();
+        World w = shot(1, 0.4, -3, 0.2).time(20);
+        assertEquals(new Move.Dive(true), k.decide(w.situation()).move());
+        w.motion("dive_left", null, 0).time(20.04);
+        assertEquals(Move.STAND, k.decide(w.situation()).move(), "playing: not requested again");
+        assertTrue(k.diving());
+        w.motion(null, "dive_left", 1).time(21.5).fall(FallState.FALLEN_BACK);
+        k.decide(w.situation());
+        assertEquals(Goalkeeper.State.LOCALIZE, k.state());
+    }
+
+    @Test
+    void localizeWalksToTheSpotThenGuards() {
+        Goalkeeper k = new Goalkeeper(C);
+        Move m = k.decide(World.at(-12, 0, 0).ballAt(0, 0).situation()).move();
+        assertTrue(m instanceof Move.Turn, "spot behind: turn first, " + m);
+        assertEquals(Goalkeeper.State.LOCALIZE, k.state());
+        assertEquals(Move.STAND, k.decide(World.at(-14.45, 0.1, 3).ballAt(0, 0).situation()).move());
+        assertEquals(Goalkeeper.State.GUARD, k.state());
+        // Pushed 1 m off the spot with no shot coming: back to LOCALIZE.
+        k.decide(World.at(-13.5, 0, 0).ballAt(0, 0).situation());
+        assertEquals(Goalkeeper.State.LOCALIZE, k.state());
+    }
+
+    @Test
+    void liberoClearsABallLyingInTheGoalAreaWhenNobodyIsNearIt() {
+        Goalkeeper k = guarding();
+        k.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).situation());
+        assertEquals(Goalkeeper.State.LIBERO, k.state());
+        assertTrue(k.hasBall());
+        // Cleared: the ball left the goal area (1.8 m deep) by more than 0.5 m.
+        k.decide(World.at(-13.8, 0.3, 0).ballAt(-11, 0).situation());
+        assertEquals(Goalkeeper.State.LOCALIZE, k.state());
+        assertFalse(k.hasBall());
+        // A ball rolling through the goal area at 2 m/s is not Libero's.
+        Goalkeeper r = guarding();
+        r.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 1.5).ballVelocity(0, 2).situation());
+        assertEquals(Goalkeeper.State.GUARD, r.state());
+        // An opponent next to the ball: the keeper stays in its goal.
+        Goalkeeper g = guarding();
+        g.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).opponentAt(9, -13.2, 0.8).situation());
+        assertEquals(Goalkeeper.State.GUARD, g.state());
+    }
+
+    @Test
+    void behaviourStandsUpWhenDownButNeverInterruptsADive() {
+        GoalkeeperBehaviour b = new GoalkeeperBehaviour(C);
+        b.decide(World.at(-14.5, 0, 0).ballAt(0, 0).situation());
+        assertEquals(Goalkeeper.State.GUARD, b.state());
+        World w = shot(1, 0.4, -3, 0.2).time(30);
+        assertEquals(new Move.Dive(true), b.decide(w.situation()).move());
+        w.motion("dive_left", null, 0).fall(FallState.FALLEN_BACK).time(30.5);
+        assertEquals(Move.STAND, b.decide(w.situation()).move(), "lying on purpose: no stand-up yet");
+        w.motion(null, "dive_left", 1).time(31.5);
+        b.decide(w.situation());
+        assertEquals(new Move.StandUp(false), b.decide(w.time(31.52).situation()).move());
+    }
+}
