@@ -93,13 +93,13 @@ public final class Player {
         TeamKey key = teamKey(o.team());
         return new PlayerParts(beliefs, new MotionController(library, MotionConfig.DEFAULT), field, draw, (unum, self) -> {
             if (unum == channel.coordinator()) {
-                GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(AgentConfig.DEFAULT));
+                GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(AgentConfig.forRobotType(o.robotType())));
                 TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,
                         self::playMode, keeper::hasBall);
                 return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
             }
             return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum),
-                    new FieldBrain(new FieldPlayerBehaviour(AgentConfig.DEFAULT), unum, o.players(), CoordinationConfig.THESIS));
+                    new FieldBrain(new FieldPlayerBehaviour(AgentConfig.forRobotType(o.robotType())), unum, o.players(), CoordinationConfig.THESIS));
         });
     }
 

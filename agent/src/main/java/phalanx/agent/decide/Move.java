@@ -13,10 +13,18 @@ public sealed interface Move {
      * Walk forward. {@code lean} -1 (right) .. 1 (left) curves the path (Walk Leaning, 4.5.5);
      * {@code slow} shortens the steps near a target (Walk Slowdown).
      */
-    record Walk(double lean, boolean slow) implements Move {}
+    record Walk(double lean, boolean slow) implements Move {
+        public Walk {
+            if (!Double.isFinite(lean)) lean = 0; // a bad belief must not reach the motion layer
+        }
+    }
 
     /** Turn in place; {@code left} chooses the side, {@code gain} 0.3-1.0 the speed (Turn Gain, 4.5.5). */
-    record Turn(boolean left, double gain) implements Move {}
+    record Turn(boolean left, double gain) implements Move {
+        public Turn {
+            if (!Double.isFinite(gain)) gain = 1;
+        }
+    }
 
     /** One side step. */
     record SideStep(boolean left) implements Move {}
