@@ -62,16 +62,19 @@ public final class Player {
             System.err.println("phalanx-player: cannot start: " + e.getMessage());
             return 2;
         }
+        // Everything is built before connecting, so the scene goes out right after the connection
+        // opens (an agent-sync server has stalled on a late scene: docs/protocol.md).
+        PlayerRuntime runtime = new PlayerRuntime(o, parts);
         ServerConnection c;
         try {
-            c = ServerConnection.connect(o.host(), o.port(), o.connectTimeoutMillis());
+            c = ServerConnection.connect(o.host(), o.port(), o.connectTimeoutMillis(), ThinkLoop.hello(o));
         } catch (WireException e) {
             System.err.println("phalanx-player " + o.unum() + ": " + e.getMessage() + " (is rcssserver3d running? see README)");
             return 3;
         }
         try (c) {
             LOG.info("connected to " + o.host() + ":" + o.port() + " as " + o.team() + " " + o.unum() + ", type " + o.robotType());
-            ThinkLoop.Outcome out = new ThinkLoop(c, o, parts).run();
+            ThinkLoop.Outcome out = new ThinkLoop(c, o, runtime).run();
             String msg = "phalanx-player " + o.unum() + ": " + out.reason() + " after " + out.cycles() + " cycles ("
                     + out.malformed() + " malformed messages skipped)";
             LOG.info(msg);

@@ -10,7 +10,7 @@ import java.io.IOException;
 import java.util.logging.Logger;
 
 /**
- * The player's I/O: send the scene, then for every message the server sends, one reply from the
+ * The player's I/O (the connection has sent the scene: {@link #hello}): for every message the server sends, one reply from the
  * {@link PlayerRuntime} — every cycle without fail — and the think time of each cycle.
  */
 public final class ThinkLoop {
@@ -26,19 +26,24 @@ public final class ThinkLoop {
     private final PlayerRuntime runtime;
     private final ThinkTimes times = new ThinkTimes();
 
-    public ThinkLoop(ServerConnection connection, PlayerOptions options, PlayerParts parts) {
+    public ThinkLoop(ServerConnection connection, PlayerOptions options, PlayerRuntime runtime) {
         this.connection = connection;
         this.options = options;
-        this.runtime = new PlayerRuntime(options, parts);
+        this.runtime = runtime;
+    }
+
+    /**
+     * The first message, sent by the connection the moment it opens: the scene, with a syn for
+     * agent-sync servers (docs/protocol.md).
+     */
+    public static String hello(PlayerOptions o) {
+        return EffectorMessage.scene(o.robotType()) + "(syn)";
     }
 
     /** Runs until the connection ends; never throws for bad input. */
     public Outcome run() {
         FrameReader in = connection.reader();
         try {
-            // The syn after the scene matters in agent-sync mode: the server waits for a new agent's
-            // syn before the next step, and sends nothing until it steps (docs/protocol.md).
-            connection.send(EffectorMessage.scene(options.robotType()) + "(syn)");
             while (true) {
                 in.next();
                 long start = System.nanoTime();

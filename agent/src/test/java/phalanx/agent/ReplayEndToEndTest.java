@@ -28,8 +28,8 @@ class ReplayEndToEndTest {
 
     private static ReplayServer.Result play(ReplayServer.Options options, PlayerOptions po) throws Exception {
         try (ReplayServer stub = new ReplayServer(s1, 0, options).start();
-             ServerConnection c = ServerConnection.connect("127.0.0.1", stub.port(), 2000)) {
-            ThinkLoop.Outcome outcome = new ThinkLoop(c, po, Player.parts(po)).run();
+             ServerConnection c = ServerConnection.connect("127.0.0.1", stub.port(), 2000, ThinkLoop.hello(po))) {
+            ThinkLoop.Outcome outcome = new ThinkLoop(c, po, new PlayerRuntime(po, Player.parts(po))).run();
             ReplayServer.Result r = stub.await(30, TimeUnit.SECONDS);
             assertEquals(s1.size(), outcome.cycles(), "the player saw every replayed message");
             return r;

@@ -29,6 +29,15 @@ public final class ServerConnection implements AutoCloseable {
      * {@code giveUpAfterMillis} have passed. Throws a {@link WireException} naming host and port.
      */
     public static ServerConnection connect(String host, int port, long giveUpAfterMillis) throws WireException {
+        return connect(host, port, giveUpAfterMillis, null);
+    }
+
+    /**
+     * As {@link #connect(String, int, long)}, sending {@code hello} the moment the connection opens.
+     * A player's scene message must come at once: an agent-sync server that accepts a connection and
+     * gets nothing for a few hundred milliseconds never creates the robot and stalls (docs/protocol.md).
+     */
+    public static ServerConnection connect(String host, int port, long giveUpAfterMillis, String hello) throws WireException {
         long deadline = System.nanoTime() + giveUpAfterMillis * 1_000_000L;
         long wait = 100;
         IOException last;
@@ -36,7 +45,9 @@ public final class ServerConnection implements AutoCloseable {
             Socket s = new Socket();
             try {
                 s.connect(new InetSocketAddress(host, port), 2000);
-                return new ServerConnection(s);
+                ServerConnection c = new ServerConnection(s);
+                if (hello != null) c.send(hello);
+                return c;
             } catch (ConnectException | SocketTimeoutException e) {
                 last = e;
             } catch (IOException e) {
