@@ -44,6 +44,7 @@ public final class ThinkLoop {
     public Outcome run() {
         FrameReader in = connection.reader();
         try {
+            if (!awaitFirstMessage()) return end("the server accepted the connection but sent nothing for 30 s");
             while (true) {
                 in.next();
                 long start = System.nanoTime();
@@ -57,6 +58,19 @@ public final class ThinkLoop {
         } catch (IOException e) {
             return end("connection lost: " + e.getMessage());
         }
+    }
+
+    /**
+     * An agent-sync server can create the robot after the syn that came with the scene, and then waits
+     * for a syn it never gets while the player waits for its first message (docs/protocol.md): repeat
+     * the syn every 250 ms until the server speaks. Harmless without sync mode.
+     */
+    private boolean awaitFirstMessage() throws IOException {
+        for (int i = 0; i < 120; i++) {
+            if (connection.awaitData(250)) return true;
+            connection.send("(syn)");
+        }
+        return false;
     }
 
     private Outcome end(String reason) {

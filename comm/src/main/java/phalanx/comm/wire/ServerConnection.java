@@ -14,13 +14,15 @@ import java.net.SocketTimeoutException;
  */
 public final class ServerConnection implements AutoCloseable {
     private final Socket socket;
+    private final BufferedInputStream in;
     private final FrameReader reader;
     private final FrameWriter writer;
 
     public ServerConnection(Socket socket) throws IOException {
         this.socket = socket;
         socket.setTcpNoDelay(true); // one small message per cycle: never wait for Nagle
-        this.reader = new FrameReader(new BufferedInputStream(socket.getInputStream(), 64 * 1024));
+        this.in = new BufferedInputStream(socket.getInputStream(), 64 * 1024);
+        this.reader = new FrameReader(in);
         this.writer = new FrameWriter(new BufferedOutputStream(socket.getOutputStream(), 8 * 1024));
     }
 
@@ -69,6 +71,24 @@ public final class ServerConnection implements AutoCloseable {
     }
 
     public FrameReader reader() { return reader; }
+
+    /**
+     * Waits up to {@code millis} for the peer to send something, without reading it (so framing is
+     * never cut by a timeout). True when bytes are waiting.
+     */
+    public boolean awaitData(long millis) throws IOException {
+        long deadline = System.nanoTime() + millis * 1_000_000L;
+        while (in.available() == 0) {
+            if (System.nanoTime() >= deadline) return false;
+            try {
+                Thread.sleep(5);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return false;
+            }
+        }
+        return true;
+    }
 
     public void send(CharSequence message) throws IOException { writer.write(message); }
 
