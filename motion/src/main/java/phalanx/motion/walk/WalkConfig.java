@@ -10,7 +10,15 @@ package phalanx.motion.walk;
  *
  * @param stepSeconds        duration of one step (half a gait cycle)
  * @param doubleSupport      share of a step with both feet on the ground, at its start, 0..0.8
- * @param stepHeight         swing foot's highest lift above the ground (sin profile over the swing)
+ * @param stepHeight         swing foot's highest lift above the ground
+ * @param liftExponent       lift profile stepHeight·sin(πs)^liftExponent over the swing (s = 0..1):
+ *                           1 lifts and lands fast, 2 lands with no vertical speed
+ * @param swingMatchGround   0..1: how much the swinging foot's speed at lift-off and touch-down
+ *                           matches the ground's speed under the torso (1 = no jerk when the foot
+ *                           takes or leaves the ground; 0 = it stops relative to the torso)
+ * @param swingLinear        0..1: how much of the swing moves at constant speed relative to the
+ *                           torso (1 = straight line at one speed: the shortest time for the hip
+ *                           joints, whose speed is capped; 0 = smooth start and stop)
  * @param legExtension       hip-to-ankle height when standing, as a share of thigh + shank (the
  *                           crouch; 1 is a stretched leg, where the knee cannot absorb anything)
  * @param footForward        neutral ankle position ahead (+) of the hip; negative puts the feet
@@ -32,31 +40,46 @@ package phalanx.motion.walk;
  *                           the target in one cycle, as the keyframe controller does)
  * @param gyroPitchGain      ankle pitch correction, deg per deg/s of torso pitch rate (gyro x)
  * @param gyroRollGain       hip roll correction, deg per deg/s of torso roll rate (gyro y)
+ * @param gyroYawGain        heading hold: deg/s of turn added per degree of heading error, the
+ *                           error being the gyro's yaw (z) rate minus the commanded turn rate,
+ *                           integrated while walking (the feet slip in yaw; this keeps the line)
+ * @param tiltPlaceForward   foot placement from torso tilt: the swinging foot lands this many metres
+ *                           further ahead per degree the torso leans forward beyond torsoLeanDeg
+ *                           (tilt from the gyro and accelerometer, complementary filter)
+ * @param tiltPlaceLeft      the same sideways: metres further to the robot's right per degree of
+ *                           roll to the right
+ * @param tiltHipPitch       hip pitch correction, degrees per degree of forward lean beyond
+ *                           torsoLeanDeg (negative straightens a torso that leans too far)
  * @param armSwingDeg        shoulder pitch swing per metre of the opposite foot's forward offset
  * @param odometryForward    measured forward distance per commanded distance (the odometry scale)
  * @param odometryLeft       measured sideways distance per commanded distance
  * @param odometryTurn       measured turn per commanded turn
  */
-public record WalkConfig(double stepSeconds, double doubleSupport, double stepHeight, double legExtension,
+public record WalkConfig(double stepSeconds, double doubleSupport, double stepHeight, double liftExponent,
+                         double swingMatchGround, double swingLinear, double legExtension,
                          double footForward, double stanceWidth, double torsoLeanDeg, double swayAmplitude,
                          double swayLead, double maxForward, double maxBackward, double maxLeft, double maxTurnDeg,
                          double accelForward, double accelLeft, double accelTurnDeg, double maxFootYawDeg,
-                         double servoGain, double gyroPitchGain, double gyroRollGain, double armSwingDeg,
+                         double servoGain, double gyroPitchGain, double gyroRollGain, double gyroYawGain,
+                         double tiltPlaceForward, double tiltPlaceLeft, double tiltHipPitch, double armSwingDeg,
                          double odometryForward, double odometryLeft, double odometryTurn) {
 
     /** The tuned walk (see motion/README.md for the measured figures and the command). */
     public static final WalkConfig DEFAULT = new WalkConfig(
-            0.14, 0.10, 0.025, 0.88,
-            0.0, 0.0, 6.0, 0.01,
-            0.0, 0.8, 0.4, 0.3, 90,
+            0.12, 0.10, 0.025, 1.0, 0.0, 0.0, 0.88,
+            0.0, 0.0, 6.0, 0.007,
+            0.0, 0.7, 0.4, 0.3, 90,
             1.0, 1.0, 200, 40,
-            1.0, 0.0, 0.0, 0.0,
+            1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
             1.0, 1.0, 1.0);
 
     public WalkConfig {
         range(stepSeconds, 0.04, 1.0, "stepSeconds");
         range(doubleSupport, 0, 0.8, "doubleSupport");
         range(stepHeight, 0, 0.1, "stepHeight");
+        range(liftExponent, 0.5, 4, "liftExponent");
+        range(swingMatchGround, 0, 1.5, "swingMatchGround");
+        range(swingLinear, 0, 1, "swingLinear");
         range(legExtension, 0.5, 1.0, "legExtension");
         range(footForward, -0.1, 0.1, "footForward");
         range(stanceWidth, -0.02, 0.1, "stanceWidth");
@@ -74,6 +97,10 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
         range(servoGain, 0.05, 1.5, "servoGain");
         range(gyroPitchGain, -1, 1, "gyroPitchGain");
         range(gyroRollGain, -1, 1, "gyroRollGain");
+        range(gyroYawGain, 0, 20, "gyroYawGain");
+        range(tiltPlaceForward, -0.05, 0.05, "tiltPlaceForward");
+        range(tiltPlaceLeft, -0.05, 0.05, "tiltPlaceLeft");
+        range(tiltHipPitch, -5, 5, "tiltHipPitch");
         range(armSwingDeg, -2000, 2000, "armSwingDeg");
         range(odometryForward, 0, 2, "odometryForward");
         range(odometryLeft, 0, 2, "odometryLeft");

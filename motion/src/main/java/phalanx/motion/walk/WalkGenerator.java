@@ -50,6 +50,7 @@ public final class WalkGenerator {
     private double lift;                                      // the swing foot's lift
     private double sway;                                      // the torso's lateral shift (feet shift by -sway)
     private Odometry odometry = Odometry.NONE;
+    private double placeForward, placeLeft;                  // balance corrections of the landing
     private final double[] targets = new double[Joint.COUNT];
 
     public WalkGenerator(WalkConfig config, LegGeometry geometry, double cycleSeconds) {
@@ -62,7 +63,16 @@ public final class WalkGenerator {
     }
 
     /** One cycle: advances the gait by the cycle and returns the joint targets (see {@link #targets()}). */
-    public double[] step(WalkVelocity request) {
+    public double[] step(WalkVelocity request) { return step(request, 0, 0); }
+
+    /**
+     * One cycle with a balance correction: the swinging foot lands {@code placeForward} metres
+     * further ahead and {@code placeLeft} further left than the gait alone would put it (kept
+     * within the feet's no-crossing bounds).
+     */
+    public double[] step(WalkVelocity request, double placeForward, double placeLeft) {
+        this.placeForward = placeForward;
+        this.placeLeft = placeLeft;
         double[] want = limit(request);
         if (!walking) {
             if (want[0] == 0 && want[1] == 0 && want[2] == 0) {
@@ -96,9 +106,15 @@ public final class WalkGenerator {
             }
             double s = Math.min(1, (t - ds) / (ts - ds));
             double[] land = landing(leftSwings);
-            double e = 0.5 - 0.5 * Math.cos(Math.PI * s);
-            for (int k = 0; k < 3; k++) swing[k] = liftoff[k] + (land[k] - liftoff[k]) * e;
-            lift = c.stepHeight() * Math.sin(Math.PI * s);
+            // cubic Hermite from lift-off to landing; end tangents follow the ground under the torso
+            double swingTime = ts - ds, s2 = s * s, s3 = s2 * s;
+            double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+            double[] ground = {-vf, -vl, -vt};
+            for (int k = 0; k < 3; k++) {
+                double m = c.swingMatchGround() * ground[k] * swingTime + c.swingLinear() * (land[k] - liftoff[k]);
+                swing[k] = h00 * liftoff[k] + h10 * m + h01 * land[k] + h11 * m;
+            }
+            lift = c.stepHeight() * Math.pow(Math.sin(Math.PI * s), c.liftExponent());
         }
         keepApart(left, true);
         keepApart(right, false);
@@ -194,7 +210,8 @@ public final class WalkGenerator {
         double[] n = new double[3];
         neutral(isLeft, n);
         double a = Math.toRadians(yaw), co = Math.cos(a), si = Math.sin(a);
-        return new double[] {mf / 2 + co * n[0] - si * n[1], ml / 2 + sign * Math.abs(ml) / 2 + si * n[0] + co * n[1], yaw};
+        return new double[] {mf / 2 + co * n[0] - si * n[1] + placeForward,
+                ml / 2 + sign * Math.abs(ml) / 2 + si * n[0] + co * n[1] + placeLeft, yaw};
     }
 
     /**

@@ -24,6 +24,7 @@ import java.util.Map;
  */
 public final class WalkTrial {
     private static final String TEAM = "PhalanxWalk";
+    private static final boolean TRACE = System.getenv("WALK_TRACE") != null;
     private final WalkTrialOptions opt;
     private final MonitorScene scene = new MonitorScene();
     private ServerConnection monitor;
@@ -36,6 +37,7 @@ public final class WalkTrial {
     private int type;
     private WalkController walk;
     private long cycles;
+    private double startOffset;
 
     private WalkTrial(WalkTrialOptions opt) { this.opt = opt; }
 
@@ -115,11 +117,18 @@ public final class WalkTrial {
 
     /** Objective of the search: forward speed, a fall costs its lost time and 0.2 m/s. */
     private double score(WalkConfig c) throws IOException {
-        Result r = trial(c, new WalkVelocity(c.maxForward(), 0, 0), opt.searchSeconds());
-        double s = r.fell() ? r.forward() / opt.searchSeconds() - 0.2 : r.speed();
-        s -= 0.002 * Math.abs(r.turnDeg()); // a curving walk is worth less
-        System.out.printf(Locale.ROOT, "  score %.3f  (%.3f m/s, heading %+.0f deg, %s)%n", s, r.speed(), r.turnDeg(), fall(r));
-        return s;
+        double worst = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < 2; k++) { // two starts a little apart: the worst counts (the server is deterministic)
+            startOffset = k * 0.7;
+            Result r = trial(c, new WalkVelocity(c.maxForward(), 0, 0), opt.searchSeconds());
+            double s = r.fell() ? r.forward() / opt.searchSeconds() - 0.2 : r.speed();
+            s -= 0.002 * Math.abs(r.turnDeg()); // a curving walk is worth less
+            System.out.printf(Locale.ROOT, "  score %.3f  (%.3f m/s, heading %+.0f deg, %s)%n", s, r.speed(), r.turnDeg(), fall(r));
+            worst = Math.min(worst, s);
+            if (r.fell()) break;
+        }
+        startOffset = 0;
+        return worst;
     }
 
     private void search(WalkConfig start) throws IOException {
@@ -166,7 +175,7 @@ public final class WalkTrial {
      */
     private Result trial(WalkConfig c, WalkVelocity request, double seconds) throws IOException {
         double[] start = request.turnDeg() != 0 ? new double[] {-5, 12, 0} : request.left() != 0 ? new double[] {0, -18, 0}
-                : new double[] {-22, -22, 45};
+                : new double[] {-22 + startOffset, -22, 45 + 5 * startOffset};
         for (int attempt = 0; ; attempt++) {
             place(c, start[0], start[1], start[2]);
             if (!fallen()) break;
@@ -174,7 +183,7 @@ public final class WalkTrial {
         }
         for (int i = 0; i < 50; i++) cycle(request); // start-up
         MonitorScene.Pose a = torso();
-        double t0 = last.time(), prevYaw = a.yawDeg(), turned = 0;
+        double t0 = clock(), prevYaw = a.yawDeg(), turned = 0;
         int n = (int) Math.round(seconds / 0.02);
         boolean fell = false;
         double fellAfter = Double.NaN;
@@ -186,14 +195,16 @@ public final class WalkTrial {
             while (d < -180) d += 360;
             turned += d;
             prevYaw = p.yawDeg();
+            if (TRACE) System.err.printf(Locale.ROOT, "trace est pitch %.1f roll %.1f mon %d cyc %d %.2f pos %.3f %.3f z %.3f yaw %.1f pitch(fwdZ) %+.3f roll(rightZ) %+.3f gyro %s%n",
+                    walk.pitchForward(), walk.rollRight(), monitorMessages(), cycles, clock() - t0, p.x(), p.y(), p.z(), p.yawDeg(), p.forwardZ(), p.r()[6], last.gyro());
             if (fallen()) {
                 fell = true;
-                fellAfter = last.time() - t0;
+                fellAfter = clock() - t0;
                 break;
             }
         }
         MonitorScene.Pose b = torso();
-        double dt = last.time() - t0, h = Math.toRadians(a.yawDeg());
+        double dt = clock() - t0, h = Math.toRadians(a.yawDeg());
         double dx = b.x() - a.x(), dy = b.y() - a.y();
         double fwd = dx * Math.cos(h) + dy * Math.sin(h), left = -dx * Math.sin(h) + dy * Math.cos(h);
         return new Result(dt, fwd, left, turned, fell, fellAfter);
@@ -236,8 +247,7 @@ public final class WalkTrial {
     private void cycle(WalkVelocity request) throws IOException {
         receive();
         cycles++;
-        if (System.getenv("WALK_DEBUG") != null) System.err.println("cycle " + cycles + " t=" + last.time());
-        JointVelocities v = walk.step(last.joints(), last.gyro(), request);
+        JointVelocities v = walk.step(last.joints(), last.gyro(), last.acc(), request);
         out.reset();
         v.appendTo(out).syn();
         agent.send(out.text());
@@ -274,6 +284,18 @@ public final class WalkTrial {
     private void trainer(String command) throws IOException {
         synchronized (monitor) {
             monitor.send(command);
+        }
+    }
+
+    /**
+     * Simulated seconds, counted in cycles of 0.02 s: the server's {@code now} is a float32 that,
+     * after a long free run (tens of thousands of seconds), advances by 0.0195 or 0.0234 per cycle.
+     */
+    private double clock() { return cycles * 0.02; }
+
+    private int monitorMessages() {
+        synchronized (scene) {
+            return scene.messages();
         }
     }
 
