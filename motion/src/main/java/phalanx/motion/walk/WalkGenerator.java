@@ -215,10 +215,13 @@ public final class WalkGenerator {
     }
 
     /**
-     * Keeps a foot on its own side of the centre line, with its heel corner (which turns inward when
-     * the foot yaws outward) included: then the two feet can never touch or cross.
+     * Keeps a foot turned outward and on its own side of the centre line, with its heel corner (which
+     * turns inward when the foot yaws outward) included: then the two feet can never touch or cross.
      */
-    static void keepApart(double[] p, boolean isLeft) {
+    void keepApart(double[] p, boolean isLeft) {
+        // outward yaw only (the hip yaw-pitch joint's range): a stance foot that the body's turn would
+        // twist inward (only when a turn starts with that foot down) slides instead
+        p[2] = isLeft ? clamp(p[2], 0, c.maxFootYawDeg()) : clamp(p[2], -c.maxFootYawDeg(), 0);
         double yaw = Math.toRadians(Math.abs(p[2]));
         double inner = HEEL * Math.sin(yaw) + FOOT_HALF_WIDTH * Math.cos(yaw) + CENTRE_MARGIN;
         if (isLeft) p[1] = Math.max(p[1], inner);
