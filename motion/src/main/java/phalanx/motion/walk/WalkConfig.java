@@ -77,6 +77,24 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
             // armSwingDeg; odometry scales forward, left, turn
             75, 1.0, 1.0, 1.0);
 
+    /**
+     * The tuned walk for robot type 0-4 (-1 = nao.rsg = type 0). Types 0 and 4 share the default;
+     * type 2 (same legs, faster ankle pitch, slower ankle roll) and the long-legged types 1 and 3
+     * have their own tuning where it measured better (motion/README.md).
+     */
+    public static WalkConfig forType(int type) {
+        return switch (type) {
+            case -1, 0, 4 -> DEFAULT;
+            case 1, 2, 3 -> TYPE_OVERRIDES.getOrDefault(type, DEFAULT);
+            default -> throw new IllegalArgumentException("robot type must be 0-4 (or -1 for nao.rsg), got " + type);
+        };
+    }
+
+    private static final java.util.Map<Integer, WalkConfig> TYPE_OVERRIDES = java.util.Map.of(
+            // type 2: no double support, lower steps, no gyro ankle term, slower (scripts/walk-bench search)
+            2, DEFAULT.with("doubleSupport", 0).with("stepHeight", 0.015).with("maxForward", 0.65)
+                    .with("gyroPitchGain", 0).with("tiltPlaceForward", -0.002));
+
     public WalkConfig {
         range(stepSeconds, 0.04, 1.0, "stepSeconds");
         range(doubleSupport, 0, 0.8, "doubleSupport");

@@ -71,8 +71,8 @@ public final class WalkTrial {
         reader.start();
         for (int t : opt.types()) {
             connect(t);
-            if (opt.search().isEmpty()) measure(opt.config());
-            else search(opt.config());
+            if (opt.search().isEmpty()) measure(opt.config(t));
+            else search(opt.config(t));
             agent.close();
             sleep(300); // let the server drop the player before the next one connects
         }
@@ -165,7 +165,7 @@ public final class WalkTrial {
         }
         System.out.printf(Locale.ROOT, "type %d best score %.3f: %s%n", type, bestScore, best.describe());
         StringBuilder set = new StringBuilder();
-        for (String f : WalkConfig.FIELDS) if (best.get(f) != WalkConfig.DEFAULT.get(f)) set.append(set.length() == 0 ? "" : ",").append(f).append('=').append(best.get(f));
+        for (String f : WalkConfig.FIELDS) if (best.get(f) != WalkConfig.forType(type).get(f)) set.append(set.length() == 0 ? "" : ",").append(f).append('=').append(best.get(f));
         System.out.println("--set " + set);
     }
 
@@ -237,7 +237,7 @@ public final class WalkTrial {
         agent.send(EffectorMessage.init(1, TEAM));
         receive();
         agent.send("(syn)"); // answers that message: in agent-sync mode the server waits for it; cycle() receives first
-        walk = new WalkController(WalkConfig.DEFAULT, t, MotionConfig.DEFAULT);
+        walk = new WalkController(WalkConfig.forType(t), t, MotionConfig.DEFAULT);
         for (int i = 0; i < 25; i++) cycle(WalkVelocity.ZERO);
         trainer("(playMode PlayOn)");
         for (int i = 0; i < 10; i++) cycle(WalkVelocity.ZERO);

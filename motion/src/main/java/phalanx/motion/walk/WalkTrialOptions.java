@@ -70,8 +70,11 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
     }
 
     /** The default walk config with the {@code --set} overrides; a bad field or value gets its message. */
-    public WalkConfig config() {
-        WalkConfig c = WalkConfig.DEFAULT;
+    public WalkConfig config() { return config(0); }
+
+    /** The tuned config of a robot type with the {@code --set} overrides. */
+    public WalkConfig config(int type) {
+        WalkConfig c = WalkConfig.forType(type);
         for (Map.Entry<String, Double> e : set.entrySet()) c = c.with(e.getKey(), e.getValue());
         return c;
     }
