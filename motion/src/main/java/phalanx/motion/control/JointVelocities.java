@@ -14,6 +14,12 @@ public final class JointVelocities {
 
     JointVelocities(double[] radPerSecond) { this.radPerSecond = radPerSecond; }
 
+    /** Commands in rad/s by {@link Joint#ordinal()}, NaN for none (used by the walk, phalanx.motion.walk). */
+    public static JointVelocities of(double[] radPerSecond) {
+        if (radPerSecond.length != Joint.COUNT) throw new IllegalArgumentException("need " + Joint.COUNT + " commands, got " + radPerSecond.length);
+        return new JointVelocities(radPerSecond.clone());
+    }
+
     public boolean has(Joint j) { return !Double.isNaN(radPerSecond[j.ordinal()]); }
 
     /** The command in rad/s, NaN for a joint that gets none. */

@@ -1,0 +1,170 @@
+package phalanx.motion.walk;
+
+/**
+ * Every number of the omnidirectional walk. The thesis has no parametric walk (its walk is a
+ * keyframe motion, 4.5.1, 0.45 m/s in chapter 6), so the defaults are our own, tuned in
+ * rcssserver3d 0.7.3 with {@code scripts/walk-bench} (motion/README.md, "Omnidirectional walk").
+ *
+ * <p>Gait timing: a step (one foot's swing plus the double support before it) lasts
+ * {@code stepSeconds}; a full gait cycle is two steps. Lengths are metres, angles degrees.
+ *
+ * @param stepSeconds        duration of one step (half a gait cycle)
+ * @param doubleSupport      share of a step with both feet on the ground, at its start, 0..0.8
+ * @param stepHeight         swing foot's highest lift above the ground
+ * @param liftExponent       lift profile stepHeight·sin(πs)^liftExponent over the swing (s = 0..1):
+ *                           1 lifts and lands fast, 2 lands with no vertical speed
+ * @param swingMatchGround   0..1: how much the swinging foot's speed at lift-off and touch-down
+ *                           matches the ground's speed under the torso (1 = no jerk when the foot
+ *                           takes or leaves the ground; 0 = it stops relative to the torso)
+ * @param swingLinear        0..1: how much of the swing moves at constant speed relative to the
+ *                           torso (1 = straight line at one speed: the shortest time for the hip
+ *                           joints, whose speed is capped; 0 = smooth start and stop)
+ * @param legExtension       hip-to-ankle height when standing, as a share of thigh + shank (the
+ *                           crouch; 1 is a stretched leg, where the knee cannot absorb anything)
+ * @param footForward        neutral ankle position ahead (+) of the hip; negative puts the feet
+ *                           behind, i.e. the centre of mass ahead of the feet
+ * @param stanceWidth        extra lateral distance of each neutral foot outside its hip
+ * @param torsoLeanDeg       forward lean of the torso; the feet stay flat (ankle pitch compensates)
+ * @param swayAmplitude      lateral shift of the torso over the stance foot in the middle of a
+ *                           step (sine over the step; moves the centre of mass over the support)
+ * @param swayLead           phase lead of the sway as a share of a step (positive = earlier)
+ * @param maxForward         forward speed limit, m/s (requests are clamped to it)
+ * @param maxBackward        backward speed limit, m/s (positive number)
+ * @param maxLeft            sideways speed limit, m/s, both directions
+ * @param maxTurnDeg         turn-rate limit, deg/s, both directions
+ * @param accelForward       forward acceleration limit, m/s²
+ * @param accelLeft          sideways acceleration limit, m/s²
+ * @param accelTurnDeg       turn acceleration limit, deg/s²
+ * @param maxFootYawDeg      largest yaw of a foot relative to the torso (outward only)
+ * @param servoGain          share of the remaining joint error commanded per cycle (1 = reach
+ *                           the target in one cycle, as the keyframe controller does)
+ * @param gyroPitchGain      ankle pitch correction, deg per deg/s of torso pitch rate (gyro x)
+ * @param gyroRollGain       hip roll correction, deg per deg/s of torso roll rate (gyro y)
+ * @param gyroYawGain        heading hold: deg/s of turn added per degree of heading error, the
+ *                           error being the gyro's yaw (z) rate minus the commanded turn rate,
+ *                           integrated while walking (the feet slip in yaw; this keeps the line)
+ * @param tiltPlaceForward   foot placement from torso tilt: the swinging foot lands this many metres
+ *                           further ahead per degree the torso leans forward beyond torsoLeanDeg
+ *                           (tilt from the gyro and accelerometer, complementary filter)
+ * @param tiltPlaceLeft      the same sideways: metres further to the robot's right per degree of
+ *                           roll to the right
+ * @param tiltHipPitch       hip pitch correction, degrees per degree of forward lean beyond
+ *                           torsoLeanDeg (negative straightens a torso that leans too far)
+ * @param armSwingDeg        shoulder pitch swing per metre of the opposite foot's forward offset
+ * @param odometryForward    measured forward distance per commanded distance (the odometry scale)
+ * @param odometryLeft       measured sideways distance per commanded distance
+ * @param odometryTurn       measured turn per commanded turn
+ */
+public record WalkConfig(double stepSeconds, double doubleSupport, double stepHeight, double liftExponent,
+                         double swingMatchGround, double swingLinear, double legExtension,
+                         double footForward, double stanceWidth, double torsoLeanDeg, double swayAmplitude,
+                         double swayLead, double maxForward, double maxBackward, double maxLeft, double maxTurnDeg,
+                         double accelForward, double accelLeft, double accelTurnDeg, double maxFootYawDeg,
+                         double servoGain, double gyroPitchGain, double gyroRollGain, double gyroYawGain,
+                         double tiltPlaceForward, double tiltPlaceLeft, double tiltHipPitch, double armSwingDeg,
+                         double odometryForward, double odometryLeft, double odometryTurn) {
+
+    /** The tuned walk (see motion/README.md for the measured figures and the command). */
+    public static final WalkConfig DEFAULT = new WalkConfig(
+            // timing and swing: stepSeconds, doubleSupport, stepHeight, liftExponent, swingMatchGround, swingLinear
+            0.12, 0.05, 0.025, 1.0, 0.3, 0.0,
+            // posture: legExtension, footForward, stanceWidth, torsoLeanDeg, swayAmplitude, swayLead
+            0.88, -0.025, 0.0, 6.0, 0.007, 0.0,
+            // limits: maxForward, maxBackward, maxLeft, maxTurnDeg, accelForward, accelLeft, accelTurnDeg, maxFootYawDeg
+            0.75, 0.4, 0.1, 90, 1.0, 1.0, 200, 40,
+            // feedback: servoGain, gyroPitchGain, gyroRollGain, gyroYawGain, tiltPlaceForward, tiltPlaceLeft, tiltHipPitch
+            1.0, 0.02, 0.0, 0.0, 0.0, 0.0, 0.0,
+            // armSwingDeg; odometry scales forward, left, turn
+            75, 1.0, 1.0, 1.0);
+
+    /**
+     * The tuned walk for robot type 0-4 (-1 = nao.rsg = type 0). Types 0 and 4 share the default;
+     * type 2 (same legs, faster ankle pitch, slower ankle roll) and the long-legged types 1 and 3
+     * have their own tuning where it measured better (motion/README.md).
+     */
+    public static WalkConfig forType(int type) {
+        return switch (type) {
+            case -1, 0, 4 -> DEFAULT;
+            case 1, 2, 3 -> TYPE_OVERRIDES.getOrDefault(type, DEFAULT);
+            default -> throw new IllegalArgumentException("robot type must be 0-4 (or -1 for nao.rsg), got " + type);
+        };
+    }
+
+    private static final java.util.Map<Integer, WalkConfig> TYPE_OVERRIDES = java.util.Map.of(
+            // type 2: no double support, lower steps, no gyro ankle term, slower (scripts/walk-bench search)
+            2, DEFAULT.with("doubleSupport", 0).with("stepHeight", 0.015).with("maxForward", 0.65)
+                    .with("gyroPitchGain", 0).with("tiltPlaceForward", -0.002));
+
+    public WalkConfig {
+        range(stepSeconds, 0.04, 1.0, "stepSeconds");
+        range(doubleSupport, 0, 0.8, "doubleSupport");
+        range(stepHeight, 0, 0.1, "stepHeight");
+        range(liftExponent, 0.5, 4, "liftExponent");
+        range(swingMatchGround, 0, 1.5, "swingMatchGround");
+        range(swingLinear, 0, 1, "swingLinear");
+        range(legExtension, 0.5, 1.0, "legExtension");
+        range(footForward, -0.1, 0.1, "footForward");
+        range(stanceWidth, -0.02, 0.1, "stanceWidth");
+        range(torsoLeanDeg, -30, 45, "torsoLeanDeg");
+        range(swayAmplitude, 0, 0.1, "swayAmplitude");
+        range(swayLead, -0.5, 0.5, "swayLead");
+        range(maxForward, 0, 3, "maxForward");
+        range(maxBackward, 0, 3, "maxBackward");
+        range(maxLeft, 0, 3, "maxLeft");
+        range(maxTurnDeg, 0, 720, "maxTurnDeg");
+        range(accelForward, 1e-3, 100, "accelForward");
+        range(accelLeft, 1e-3, 100, "accelLeft");
+        range(accelTurnDeg, 1e-3, 10000, "accelTurnDeg");
+        range(maxFootYawDeg, 0, 80, "maxFootYawDeg");
+        range(servoGain, 0.05, 1.5, "servoGain");
+        range(gyroPitchGain, -1, 1, "gyroPitchGain");
+        range(gyroRollGain, -1, 1, "gyroRollGain");
+        range(gyroYawGain, 0, 20, "gyroYawGain");
+        range(tiltPlaceForward, -0.05, 0.05, "tiltPlaceForward");
+        range(tiltPlaceLeft, -0.05, 0.05, "tiltPlaceLeft");
+        range(tiltHipPitch, -5, 5, "tiltHipPitch");
+        range(armSwingDeg, -2000, 2000, "armSwingDeg");
+        range(odometryForward, 0, 2, "odometryForward");
+        range(odometryLeft, 0, 2, "odometryLeft");
+        range(odometryTurn, 0, 2, "odometryTurn");
+    }
+
+    private static void range(double v, double min, double max, String name) {
+        if (!(v >= min && v <= max)) throw new IllegalArgumentException("walk config " + name + " must be in [" + min + ", " + max + "], got " + v);
+    }
+
+    /** Names of the fields in declaration order (for {@link #with}). */
+    public static final java.util.List<String> FIELDS = java.util.Arrays.stream(WalkConfig.class.getRecordComponents())
+            .map(java.lang.reflect.RecordComponent::getName).toList();
+
+    /** The value of a field by name. */
+    public double get(String field) {
+        try {
+            return (double) WalkConfig.class.getMethod(field).invoke(this);
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalArgumentException("walk config has no field '" + field + "' (fields: " + FIELDS + ")");
+        }
+    }
+
+    /** A copy with one field changed; an unknown name or a value out of range is refused with a message. */
+    public WalkConfig with(String field, double value) {
+        int k = FIELDS.indexOf(field);
+        if (k < 0) throw new IllegalArgumentException("walk config has no field '" + field + "' (fields: " + FIELDS + ")");
+        Object[] v = new Object[FIELDS.size()];
+        for (int i = 0; i < v.length; i++) v[i] = i == k ? value : get(FIELDS.get(i));
+        try {
+            return (WalkConfig) WalkConfig.class.getDeclaredConstructors()[0].newInstance(v);
+        } catch (java.lang.reflect.InvocationTargetException e) {
+            throw (RuntimeException) e.getCause();
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /** {@code name=value} pairs of every field, for logs and the README. */
+    public String describe() {
+        StringBuilder sb = new StringBuilder();
+        for (String f : FIELDS) sb.append(sb.length() == 0 ? "" : " ").append(f).append('=').append(get(f));
+        return sb.toString();
+    }
+}

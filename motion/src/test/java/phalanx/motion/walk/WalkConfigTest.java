@@ -1,0 +1,30 @@
+package phalanx.motion.walk;
+
+import org.junit.jupiter.api.Test;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+class WalkConfigTest {
+    @Test
+    void withChangesOneFieldAndKeepsTheRest() {
+        WalkConfig c = WalkConfig.DEFAULT.with("stepSeconds", 0.2);
+        assertEquals(0.2, c.stepSeconds());
+        for (String f : WalkConfig.FIELDS) if (!f.equals("stepSeconds")) assertEquals(WalkConfig.DEFAULT.get(f), c.get(f), f);
+    }
+
+    @Test
+    void badFieldsAndValuesAreNamed() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> WalkConfig.DEFAULT.with("stepLength", 1));
+        assertTrue(e.getMessage().contains("no field 'stepLength'"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> WalkConfig.DEFAULT.with("doubleSupport", 0.9));
+        assertTrue(e.getMessage().contains("doubleSupport must be in [0.0, 0.8], got 0.9"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> WalkConfig.DEFAULT.with("stepHeight", Double.NaN));
+        assertTrue(e.getMessage().contains("stepHeight"), e.getMessage());
+    }
+
+    @Test
+    void describeListsEveryField() {
+        String d = WalkConfig.DEFAULT.describe();
+        for (String f : WalkConfig.FIELDS) assertTrue(d.contains(f + "="), f);
+    }
+}
