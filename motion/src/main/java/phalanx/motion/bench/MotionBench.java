@@ -134,8 +134,7 @@ public final class MotionBench {
         agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
         agent.send(EffectorMessage.scene(type));
         receive();
-        agent.send(EffectorMessage.init(1, TEAM));
-        receive();
+        agent.send(EffectorMessage.init(1, TEAM)); // carries (syn): the next message is answered by cycle()
         controller = new MotionController(library, MotionConfig.DEFAULT);
         hold(25);
         trainer("(playMode PlayOn)");
