@@ -182,6 +182,12 @@ public final class MotionBench {
         out.reset();
         v.appendTo(out).syn();
         agent.send(out.text());
+        if (opt.trace() && cycles % 5 == 0) {
+            MonitorScene.Pose p = torso();
+            double[] b = ball();
+            if (p != null) System.err.printf(Locale.ROOT, "  t=%.2f %s/%s pos=(%.3f %.3f %.3f) yaw=%.1f up=%.2f fwdZ=%.2f ball=(%.2f %.2f)%n", last.time(),
+                    controller.playing(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(), b == null ? 0 : b[0], b == null ? 0 : b[1]);
+        }
     }
 
     private void hold(int n) throws IOException { for (int i = 0; i < n; i++) cycle(MotionRequest.NONE); }
@@ -258,6 +264,7 @@ public final class MotionBench {
         double bx = p.x() + 0.17 * Math.cos(h) + 0.055 * Math.sin(h), by = p.y() + 0.17 * Math.sin(h) - 0.055 * Math.cos(h);
         trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042))", bx, by));
         hold(10);
+        for (int i = 0; i < 100 && Math.hypot(ball()[0] - bx, ball()[1] - by) > 0.01; i++) hold(1); // the monitor may lag
         double[] b0 = ball();
         long done = controller.completions();
         for (int i = 0; i < 250 && controller.completions() == done; i++) cycle(MotionRequest.of(motion));
@@ -293,7 +300,7 @@ public final class MotionBench {
         for (int i = 0; i < 150 && !fallen(); i++) {
             receive();
             out.reset().hinge(Joint.LLJ5, v).hinge(Joint.RLJ5, v);
-            if (!back) out.hinge(Joint.LLJ3, 3).hinge(Joint.RLJ3, 3);
+            if (!back) out.hinge(Joint.LLJ3, 1).hinge(Joint.RLJ3, 1).hinge(Joint.LAJ1, 3).hinge(Joint.RAJ1, 3);
             agent.send(out.syn().text());
         }
         hold(100); // lie still
@@ -305,8 +312,10 @@ public final class MotionBench {
         double upAt = Double.NaN;
         long done = controller.completions();
         MotionRequest r = MotionRequest.of(motion).interrupting();
+        double maxZ = 0;
         for (int i = 0; i < 400 && controller.completions() == done; i++) {
             cycle(r);
+            maxZ = Math.max(maxZ, torso().z() * Math.max(0, torso().upZ()));
             if (Double.isNaN(upAt) && torso().upZ() > 0.9 && torso().z() > 0.75 * standingZ) upAt = last.time() - t0;
         }
         for (int i = 0; i < 50; i++) cycle(MotionRequest.NONE); // must still stand 1 s later
@@ -315,7 +324,9 @@ public final class MotionBench {
             row.getupOk++;
             row.getupTime.add(Double.isNaN(upAt) ? last.time() - t0 : upAt);
         }
-        System.err.printf(Locale.ROOT, "  getup %s (%s): %s%n", motion, back ? "pushed back" : "pushed front", ok ? "ok" : "failed");
+        MonitorScene.Pose e = torso();
+        System.err.printf(Locale.ROOT, "  getup %s (%s): %s  max z*up %.3f, end z %.3f up %.2f%n", motion, back ? "pushed back" : "pushed front",
+                ok ? "ok" : "failed", maxZ, e.z(), e.upZ());
         if (!ok) getUpQuietly();
     }
 
