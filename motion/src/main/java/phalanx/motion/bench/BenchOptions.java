@@ -11,10 +11,10 @@ import java.util.List;
  *              DESIGN.md, so the team fields 0, 1 and 2 at least)
  */
 public record BenchOptions(String host, int port, int monitorPort, List<Integer> types, int trials,
-                           double walkSeconds, double turnSeconds, Path motions, String only) {
+                           double walkSeconds, double turnSeconds, Path motions, String only, boolean trace) {
 
     public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
-            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup]";
+            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup] [--trace]";
 
     public static BenchOptions parse(String... args) {
         String host = "127.0.0.1";
@@ -23,9 +23,11 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
         List<Integer> types = List.of(0, 1, 2);
         Path motions = Path.of("motions");
         String only = null;
+        boolean trace = false;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(USAGE);
+            if (flag.equals("--trace")) { trace = true; continue; }
             if (i + 1 >= args.length) throw new IllegalArgumentException(flag + " needs a value\n" + USAGE);
             String v = args[++i];
             switch (flag) {
@@ -52,7 +54,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
             }
         }
-        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only);
+        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace);
     }
 
     public boolean runs(String what) { return only == null || only.equals(what); }

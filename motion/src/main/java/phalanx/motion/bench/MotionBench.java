@@ -134,8 +134,7 @@ public final class MotionBench {
         agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
         agent.send(EffectorMessage.scene(type));
         receive();
-        agent.send(EffectorMessage.init(1, TEAM));
-        receive();
+        agent.send(EffectorMessage.init(1, TEAM)); // carries (syn): the next message is answered by cycle()
         controller = new MotionController(library, MotionConfig.DEFAULT);
         hold(25);
         trainer("(playMode PlayOn)");
@@ -183,7 +182,19 @@ public final class MotionBench {
         out.reset();
         v.appendTo(out).syn();
         agent.send(out.text());
+        if (opt.trace() && cycles % 5 == 0) {
+            MonitorScene.Pose p = torso();
+            double[] b = ball();
+            if (p != null) System.err.printf(Locale.ROOT, "  t=%.2f %s/%s pos=(%.3f %.3f %.3f) yaw=%.1f up=%.2f fwdZ=%.2f ball=(%.2f %.2f)%n", last.time(),
+                    controller.playing(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(), b == null ? 0 : b[0], b == null ? 0 : b[1]);
+        }
     }
+
+    /**
+     * Simulated seconds from our own cycle count (the server runs in sync mode, so no cycle is lost),
+     * not from its float clock, which gets coarse in a server that has run long without agents.
+     */
+    private double simTime() { return cycles * 0.02; }
 
     private void hold(int n) throws IOException { for (int i = 0; i < n; i++) cycle(MotionRequest.NONE); }
 
@@ -195,12 +206,37 @@ public final class MotionBench {
         }
     }
 
-    /** Trainer move to (x, y) facing +x (the move's angle 0 faces +y, recordings README), then let it stand. */
+    /**
+     * Trainer move to (x, y) facing +x (the move's angle 0 faces +y, recordings README), then let it
+     * stand. The joints are first brought to the walk's start pose wherever the robot is (a move
+     * resets position and orientation, not the joints), so every trial starts alike.
+     */
     private void place(double x, double y) throws IOException {
-        // finish whatever is playing first
-        for (int i = 0; i < 200 && controller.playing() != null; i++) cycle(MotionRequest.NONE);
-        trainer(String.format(Locale.ROOT, "(agent (unum 1) (team Left) (move %.3f %.3f %.3f -90))", x, y, standingZ + 0.01));
+        controller = new MotionController(library, MotionConfig.DEFAULT); // drop whatever was playing
+        double[] ready = readyPose();
+        for (int i = 0; i < 40; i++) {
+            receive();
+            out.reset();
+            for (Joint j : Joint.values()) {
+                if (!last.joints().has(j)) continue;
+                double target = Double.isNaN(ready[j.ordinal()]) ? 0 : ready[j.ordinal()];
+                out.hinge(j, Math.max(-6, Math.min(6, Math.toRadians(target - last.joints().degrees(j)) * 10)));
+            }
+            agent.send(out.syn().text());
+        }
+        trainer(String.format(Locale.ROOT, "(agent (unum 1) (team Left) (move %.3f %.3f %.3f -90))", x, y, standingZ - 0.02));
         hold(50);
+    }
+
+    /** The first phase of walk_forward: the crouch every motion starts from. */
+    private double[] readyPose() {
+        double[] t = new double[Joint.COUNT];
+        java.util.Arrays.fill(t, Double.NaN);
+        if (library.get("walk_forward") instanceof phalanx.motion.phase.PhaseMotion pm) {
+            phalanx.motion.phase.Phase p = pm.phase(pm.first());
+            for (Joint j : Joint.values()) t[j.ordinal()] = p.targetDeg(j);
+        }
+        return t;
     }
 
     private boolean fallen() {
@@ -214,14 +250,14 @@ public final class MotionBench {
         MotionRequest walk = MotionRequest.of("walk_forward");
         for (int i = 0; i < 50; i++) cycle(walk); // start-up, not measured
         MonitorScene.Pose a = torso();
-        double t0 = last.time();
+        double t0 = simTime();
         boolean fell = false;
         for (int i = 0; i < n && !fell; i++) {
             cycle(walk);
             fell = fallen();
         }
         MonitorScene.Pose b = torso();
-        double dt = last.time() - t0;
+        double dt = simTime() - t0;
         double heading = Math.toRadians(a.yawDeg());
         double along = (b.x() - a.x()) * Math.cos(heading) + (b.y() - a.y()) * Math.sin(heading);
         row.walk.add(along / dt);
@@ -236,7 +272,7 @@ public final class MotionBench {
         MotionRequest r = MotionRequest.of(motion);
         for (int i = 0; i < 10; i++) cycle(r);
         double yaw0 = torso().yawDeg(), prev = yaw0, total = 0;
-        double t0 = last.time();
+        double t0 = simTime();
         int n = (int) Math.round(opt.turnSeconds() / 0.02);
         for (int i = 0; i < n && !fallen(); i++) {
             cycle(r);
@@ -247,7 +283,7 @@ public final class MotionBench {
             total += d;
             prev = y;
         }
-        return total / (last.time() - t0);
+        return total / (simTime() - t0);
     }
 
     /** {distance m, direction error deg} of a right-foot kick from a standing start. */
@@ -259,6 +295,7 @@ public final class MotionBench {
         double bx = p.x() + 0.17 * Math.cos(h) + 0.055 * Math.sin(h), by = p.y() + 0.17 * Math.sin(h) - 0.055 * Math.cos(h);
         trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042))", bx, by));
         hold(10);
+        for (int i = 0; i < 100 && Math.hypot(ball()[0] - bx, ball()[1] - by) > 0.01; i++) hold(1); // the monitor may lag
         double[] b0 = ball();
         long done = controller.completions();
         for (int i = 0; i < 250 && controller.completions() == done; i++) cycle(MotionRequest.of(motion));
@@ -273,6 +310,7 @@ public final class MotionBench {
         double dx = b1[0] - b0[0], dy = b1[1] - b0[1];
         double dist = Math.hypot(dx, dy);
         double err = dist < 0.05 ? Double.NaN : Math.abs(Math.toDegrees(Math.atan2(Math.sin(Math.atan2(dy, dx) - h), Math.cos(Math.atan2(dy, dx) - h))));
+        System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s%n", motion, dist, err, fallen() ? ", fell" : "");
         if (fallen()) getUpQuietly();
         return new double[] {dist, err};
     }
@@ -294,7 +332,7 @@ public final class MotionBench {
         for (int i = 0; i < 150 && !fallen(); i++) {
             receive();
             out.reset().hinge(Joint.LLJ5, v).hinge(Joint.RLJ5, v);
-            if (!back) out.hinge(Joint.LLJ3, 3).hinge(Joint.RLJ3, 3);
+            if (!back) out.hinge(Joint.LLJ3, 1).hinge(Joint.RLJ3, 1).hinge(Joint.LAJ1, 3).hinge(Joint.RAJ1, 3);
             agent.send(out.syn().text());
         }
         hold(100); // lie still
@@ -302,21 +340,25 @@ public final class MotionBench {
         MonitorScene.Pose p = torso();
         String motion = p.forwardZ() > 0 ? "stand_up_back" : "stand_up_front";
         row.getupTries++;
-        double t0 = last.time();
+        double t0 = simTime();
         double upAt = Double.NaN;
         long done = controller.completions();
         MotionRequest r = MotionRequest.of(motion).interrupting();
+        double maxZ = 0;
         for (int i = 0; i < 400 && controller.completions() == done; i++) {
             cycle(r);
-            if (Double.isNaN(upAt) && torso().upZ() > 0.9 && torso().z() > 0.75 * standingZ) upAt = last.time() - t0;
+            maxZ = Math.max(maxZ, torso().z() * Math.max(0, torso().upZ()));
+            if (Double.isNaN(upAt) && torso().upZ() > 0.9 && torso().z() > 0.75 * standingZ) upAt = simTime() - t0;
         }
         for (int i = 0; i < 50; i++) cycle(MotionRequest.NONE); // must still stand 1 s later
         boolean ok = !fallen() && torso().z() > 0.6 * standingZ;
         if (ok) {
             row.getupOk++;
-            row.getupTime.add(Double.isNaN(upAt) ? last.time() - t0 : upAt);
+            row.getupTime.add(Double.isNaN(upAt) ? simTime() - t0 : upAt);
         }
-        System.err.printf(Locale.ROOT, "  getup %s (%s): %s%n", motion, back ? "pushed back" : "pushed front", ok ? "ok" : "failed");
+        MonitorScene.Pose e = torso();
+        System.err.printf(Locale.ROOT, "  getup %s (%s): %s  max z*up %.3f, end z %.3f up %.2f%n", motion, back ? "pushed back" : "pushed front",
+                ok ? "ok" : "failed", maxZ, e.z(), e.upZ());
         if (!ok) getUpQuietly();
     }
 

@@ -62,7 +62,10 @@ public final class MotionController {
      * request. Returns the hinge velocities to send in reply (rad/s, within the speed cap).
      */
     public JointVelocities step(double now, JointAngles current, MotionRequest request) {
-        if (!Double.isFinite(now)) now = Double.isNaN(lastNow) ? 0 : lastNow + dt; // a message without time
+        // A message without a time, or one that does not come after the last: count it as the next
+        // cycle. (The server's clock is a float: after 2^18 s of a free-running server it no longer
+        // moves by 0.02 s, seen on rcssserver3d 0.7.3 left running without agents.)
+        if (!Double.isFinite(now) || (!Double.isNaN(lastNow) && now <= lastNow)) now = Double.isNaN(lastNow) ? 0 : lastNow + dt;
         lastNow = now;
         String wanted = request.motion();
         if (wanted != null && library.get(wanted) == null) {

@@ -102,7 +102,7 @@ class MotionControllerTest {
         // 30 deg in 2 cycles would need 13.09 rad/s.
         JointVelocities v = c.step(0.06, reading(Joint.LLJ3, 0), MotionRequest.of("reach"));
         assertEquals(6.1395, v.radPerSecond(Joint.LLJ3), EPS);
-        v = c.step(0.06, reading(Joint.LLJ3, 90), MotionRequest.of("reach"));
+        v = c.step(0.08, reading(Joint.LLJ3, 90), MotionRequest.of("reach"));
         assertEquals(-6.1395, v.radPerSecond(Joint.LLJ3), EPS);
     }
 
@@ -264,6 +264,17 @@ class MotionControllerTest {
         assertEquals(0.0, v.radPerSecond(Joint.LLJ3));
         c.step(Double.NaN, reading(Joint.LLJ3, 0), MotionRequest.of("reach"));
         assertEquals("reach", c.playing());
+    }
+
+    @Test
+    void aClockThatDoesNotAdvanceCountsAsOneCyclePerStep() throws Exception {
+        // A float clock near 2^19 s moves in steps of 1/16 s or not at all: each step is still a cycle.
+        MotionController c = controller(THESIS, phase("reach", REACH));
+        double t = 524288.0;
+        for (int k = 0; k < 5; k++) c.step(t, reading(Joint.LLJ3, 0), MotionRequest.of("reach"));
+        assertEquals(0, c.completions());
+        c.step(t, reading(Joint.LLJ3, 0), MotionRequest.NONE);
+        assertEquals(1, c.completions(), "five cycles of 20 ms: the 100 ms phase is over");
     }
 
     @Test
