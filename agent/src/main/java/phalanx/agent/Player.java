@@ -1,5 +1,6 @@
 package phalanx.agent;
 
+import phalanx.agent.act.Body;
 import phalanx.agent.action.FieldPlayerBehaviour;
 import phalanx.agent.goalkeeper.GoalkeeperBehaviour;
 import phalanx.agent.roboviz.RoboViz;
@@ -19,6 +20,7 @@ import phalanx.motion.MotionConfig;
 import phalanx.motion.MotionFileException;
 import phalanx.motion.MotionLibrary;
 import phalanx.motion.control.MotionController;
+import phalanx.motion.walk.WalkConfig;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -94,7 +96,8 @@ public final class Player {
         RoboViz draw = o.roboviz() == null ? RoboViz.OFF : RoboViz.to(o.roboviz());
         ChannelConfig channel = ChannelConfig.DEFAULT.withPlayers(o.players());
         TeamKey key = teamKey(o.team());
-        return new PlayerParts(beliefs, new MotionController(library, MotionConfig.DEFAULT), field, draw, (unum, self) -> {
+        Body body = new Body(new MotionController(library, MotionConfig.DEFAULT), WalkConfig.forType(o.robotType()), o.robotType());
+        return new PlayerParts(beliefs, body, field, draw, (unum, self) -> {
             if (unum == channel.coordinator()) {
                 GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(AgentConfig.forRobotType(o.robotType())));
                 TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,

@@ -5,6 +5,7 @@ import phalanx.agent.roboviz.RoboViz;
 import phalanx.agent.team.TeamChannel;
 import phalanx.localization.belief.BeliefStore;
 import phalanx.localization.field.FieldSpec;
+import phalanx.agent.act.Body;
 import phalanx.motion.control.MotionController;
 
 import phalanx.comm.perception.PlayMode;
@@ -21,7 +22,7 @@ public final class PlayerParts {
     public record Role(TeamChannel channel, Brain brain) {}
 
     private final BeliefStore beliefs;
-    private final MotionController motion;
+    private final Body body;
     private final FieldSpec field;
     private final RoboViz draw;
     private final BiFunction<Integer, PlayerParts, Role> roleFactory;
@@ -29,17 +30,17 @@ public final class PlayerParts {
     private int roleUnum;
     private PlayMode playMode = PlayMode.BEFORE_KICK_OFF;
 
-    public PlayerParts(BeliefStore beliefs, MotionController motion, FieldSpec field, RoboViz draw,
+    public PlayerParts(BeliefStore beliefs, Body body, FieldSpec field, RoboViz draw,
                        BiFunction<Integer, PlayerParts, Role> roleFactory) {
         this.beliefs = beliefs;
-        this.motion = motion;
+        this.body = body;
         this.field = field;
         this.draw = draw;
         this.roleFactory = roleFactory;
     }
 
     public BeliefStore beliefs() { return beliefs; }
-    public MotionController motion() { return motion; }
+    public Body body() { return body; }
     public FieldSpec field() { return field; }
     public RoboViz draw() { return draw; }
 
@@ -49,7 +50,8 @@ public final class PlayerParts {
     void playMode(PlayMode mode) { if (mode != null) playMode = mode; }
 
     Situation.MotionStatus motionStatus() {
-        return new Situation.MotionStatus(motion.playing(), motion.lastCompleted(), motion.completions());
+        MotionController k = body.keyframes();
+        return new Situation.MotionStatus(k.playing(), k.lastCompleted(), k.completions());
     }
 
     /** The role for this uniform number, made on first use; null while the number is unknown (0). */

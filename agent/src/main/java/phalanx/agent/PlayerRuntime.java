@@ -1,6 +1,5 @@
 package phalanx.agent;
 
-import phalanx.agent.act.Locomotion;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Situation;
 import phalanx.agent.roboviz.BeliefDrawing;
@@ -88,7 +87,8 @@ public final class PlayerRuntime {
             out.beam(beam.x(), beam.y(), beam.thetaDeg());
             parts.beliefs().forgetPose();
         }
-        JointVelocities v = parts.motion().step(p.time(), p.joints(), Locomotion.request(d.move()));
+        JointVelocities v = parts.body().step(p, d.move());
+        parts.beliefs().odometry(parts.body().odometry().forward(), parts.body().odometry().left(), parts.body().odometry().turnDeg());
         headTowards(v, p, d).appendTo(out);
         if (say != null) out.say(say);
         if (parts.draw().on()) BeliefDrawing.draw(parts.draw(), belief, role == null ? null : role.brain().target(), options.team(), unum);

@@ -64,6 +64,10 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
                          double tiltPlaceForward, double tiltPlaceLeft, double tiltHipPitch, double armSwingDeg,
                          double odometryForward, double odometryLeft, double odometryTurn) {
 
+    /** Names of the fields in declaration order (for {@link #with}); first, the per-type configs below use it. */
+    public static final java.util.List<String> FIELDS = java.util.Arrays.stream(WalkConfig.class.getRecordComponents())
+            .map(java.lang.reflect.RecordComponent::getName).toList();
+
     /** The tuned walk (see motion/README.md for the measured figures and the command). */
     public static final WalkConfig DEFAULT = new WalkConfig(
             // timing and swing: stepSeconds, doubleSupport, stepHeight, liftExponent, swingMatchGround, swingLinear
@@ -133,9 +137,6 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
         if (!(v >= min && v <= max)) throw new IllegalArgumentException("walk config " + name + " must be in [" + min + ", " + max + "], got " + v);
     }
 
-    /** Names of the fields in declaration order (for {@link #with}). */
-    public static final java.util.List<String> FIELDS = java.util.Arrays.stream(WalkConfig.class.getRecordComponents())
-            .map(java.lang.reflect.RecordComponent::getName).toList();
 
     /** The value of a field by name. */
     public double get(String field) {

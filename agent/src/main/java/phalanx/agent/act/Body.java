@@ -1,0 +1,77 @@
+package phalanx.agent.act;
+
+import phalanx.agent.decide.Move;
+import phalanx.comm.perception.Perception;
+import phalanx.motion.MotionConfig;
+import phalanx.motion.control.JointVelocities;
+import phalanx.motion.control.MotionController;
+import phalanx.motion.walk.Odometry;
+import phalanx.motion.walk.WalkConfig;
+import phalanx.motion.walk.WalkController;
+import phalanx.motion.walk.WalkVelocity;
+
+/**
+ * Carries out a {@link Move}: walking, turning and side steps with the omnidirectional walk
+ * (motion.walk), kicks, stand-ups and dives with the keyframe motions (motion.control). A kick
+ * waits until the walk has stopped; a stand-up or dive takes over at once; after a keyframe motion
+ * the walk starts afresh from standing.
+ */
+public final class Body {
+    private final MotionController keyframes;
+    private final WalkConfig walkConfig;
+    private final int robotType;
+    private WalkController walk;
+    private boolean keyframeUsed;
+    private Odometry odometry = Odometry.NONE;
+
+    public Body(MotionController keyframes, WalkConfig walkConfig, int robotType) {
+        this.keyframes = keyframes;
+        this.walkConfig = walkConfig;
+        this.robotType = robotType;
+        this.walk = newWalk();
+    }
+
+    public MotionController keyframes() { return keyframes; }
+
+    /** This cycle's motion as the walk commanded it (zero while a keyframe motion plays). */
+    public Odometry odometry() { return odometry; }
+
+    public JointVelocities step(Perception p, Move move) {
+        WalkVelocity wanted = velocity(move);
+        boolean urgent = move instanceof Move.StandUp || move instanceof Move.Dive;
+        odometry = Odometry.NONE;
+        if (wanted != null && keyframes.playing() == null) {
+            if (keyframeUsed) {       // after a kick, a fall or a dive the gait starts from standing
+                walk = newWalk();
+                keyframeUsed = false;
+            }
+            JointVelocities v = walk.step(p.joints(), p.gyro(), p.acc(), wanted);
+            odometry = walk.odometry();
+            return v;
+        }
+        if (wanted == null && !urgent && walk.walking() && !keyframeUsed) {   // stop before kicking
+            JointVelocities v = walk.step(p.joints(), p.gyro(), p.acc(), WalkVelocity.ZERO);
+            odometry = walk.odometry();
+            return v;
+        }
+        keyframeUsed = true;
+        return keyframes.step(p.time(), p.joints(), Locomotion.request(wanted == null ? move : Move.STAND));
+    }
+
+    /** The walk velocity for a locomotion move, ZERO for standing, null for a keyframe move. */
+    private WalkVelocity velocity(Move move) {
+        if (move instanceof Move.Stand) return WalkVelocity.ZERO;
+        if (move instanceof Move.Walk w) {
+            // Walk Leaning (4.5.5) becomes a turn rate while walking; Walk Slowdown a slower pace.
+            double forward = walkConfig.maxForward() * (w.slow() ? 0.4 : 1.0);
+            return new WalkVelocity(forward, 0, w.lean() * 0.5 * walkConfig.maxTurnDeg());
+        }
+        if (move instanceof Move.Turn t) return new WalkVelocity(0, 0, (t.left() ? 1 : -1) * t.gain() * walkConfig.maxTurnDeg());
+        if (move instanceof Move.SideStep s) return new WalkVelocity(0, (s.left() ? 1 : -1) * walkConfig.maxLeft(), 0);
+        return null;
+    }
+
+    private WalkController newWalk() {
+        return new WalkController(walkConfig, robotType, MotionConfig.DEFAULT);
+    }
+}
