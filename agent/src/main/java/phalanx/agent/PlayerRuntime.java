@@ -3,6 +3,8 @@ package phalanx.agent;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Situation;
 import phalanx.agent.roboviz.BeliefDrawing;
+import phalanx.agent.roboviz.PlanDrawing;
+import phalanx.coordination.TeamPlan;
 import phalanx.comm.effector.EffectorMessage;
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.Perception;
@@ -35,6 +37,7 @@ public final class PlayerRuntime {
     private double gameTime;
     private long cycles;
     private long malformed;
+    private TeamPlan drawnPlan;
 
     public PlayerRuntime(PlayerOptions options, PlayerParts parts) {
         this.options = options;
@@ -91,7 +94,16 @@ public final class PlayerRuntime {
         parts.beliefs().odometry(parts.body().odometry().forward(), parts.body().odometry().left(), parts.body().odometry().turnDeg());
         headTowards(v, p, d).appendTo(out);
         if (say != null) out.say(say);
-        if (parts.draw().on()) BeliefDrawing.draw(parts.draw(), belief, role == null ? null : role.brain().target(), options.team(), unum);
+        if (parts.draw().on()) draw(belief, role, unum);
+    }
+
+    private void draw(WorldBelief belief, PlayerParts.Role role, int unum) {
+        BeliefDrawing.draw(parts.draw(), belief, role == null ? null : role.brain().target(), options.team(), unum);
+        TeamPlan plan = role == null ? null : role.channel().lastPlan();
+        if (plan != null && plan != drawnPlan) {
+            PlanDrawing.draw(parts.draw(), plan, belief.side(), options.team());
+            drawnPlan = plan;
+        }
     }
 
     /** The head follows the decision's target with a P-controller; motion files leave the head alone. */

@@ -26,20 +26,25 @@ public final class TeamChannel {
     private final Coordinator coordinator;   // player 1
     private final FieldPlayer fieldPlayer;   // players 2..n
     private final int unum;
+    private final TeamCoordination procedure;   // player 1
 
-    private TeamChannel(Coordinator coordinator, FieldPlayer fieldPlayer, int unum) {
+    private TeamChannel(Coordinator coordinator, FieldPlayer fieldPlayer, int unum, TeamCoordination procedure) {
         this.coordinator = coordinator;
         this.fieldPlayer = fieldPlayer;
         this.unum = unum;
+        this.procedure = procedure;
     }
 
     public static TeamChannel coordinator(ChannelConfig config, TeamKey key, String team, TeamCoordination procedure) {
-        return new TeamChannel(new Coordinator(config, key, team, procedure), null, 1);
+        return new TeamChannel(new Coordinator(config, key, team, procedure), null, config.coordinator(), procedure);
     }
 
     public static TeamChannel fieldPlayer(ChannelConfig config, TeamKey key, String team, int unum) {
-        return new TeamChannel(null, new FieldPlayer(config, unum, key, team), unum);
+        return new TeamChannel(null, new FieldPlayer(config, unum, key, team), unum, null);
     }
+
+    /** On the goalkeeper, the last coordination round's plan (for debug drawing); else null. */
+    public phalanx.coordination.TeamPlan lastPlan() { return procedure == null ? null : procedure.lastPlan(); }
 
     /** One cycle: returns the text to say, or null. */
     public String step(double serverTime, PlayMode mode, List<Hear> heard, WorldBelief belief) {
