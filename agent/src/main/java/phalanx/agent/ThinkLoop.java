@@ -43,6 +43,9 @@ public final class ThinkLoop {
     /** Runs until the connection ends; never throws for bad input. */
     public Outcome run() {
         FrameReader in = connection.reader();
+        // stop.sh ends players with SIGTERM: say the think-time summary on the way out too.
+        Thread summary = new Thread(() -> System.err.println("phalanx-player " + options.unum() + ": " + times.summary()));
+        Runtime.getRuntime().addShutdownHook(summary);
         try {
             if (!awaitFirstMessage()) return end("the server accepted the connection but sent nothing for 30 s");
             while (true) {
