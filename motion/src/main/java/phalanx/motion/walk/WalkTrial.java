@@ -118,7 +118,7 @@ public final class WalkTrial {
     /** Objective of the search: forward speed, a fall costs its lost time and 0.2 m/s. */
     private double score(WalkConfig c) throws IOException {
         double worst = Double.POSITIVE_INFINITY;
-        for (int k = 0; k < 3; k++) { // three starts a little apart: the worst counts (the server is deterministic)
+        for (int k = 0; k < 2; k++) { // two starts a little apart: the worst counts (the server is deterministic)
             startOffset = k * 0.7;
             Result r = trial(c, new WalkVelocity(c.maxForward(), 0, 0), opt.searchSeconds());
             double s = r.fell() ? r.forward() / opt.searchSeconds() - 0.2 : r.speed();
