@@ -251,6 +251,9 @@ public final class WalkTrial {
     private void cycle(WalkVelocity request) throws IOException {
         receive();
         cycles++;
+        // partial monitor updates stop applying when the scene graph changes shape (a player comes
+        // or goes); a full graph now and then puts the reader back on track
+        if (cycles % 25 == 0) trainer("(reqfullstate)");
         JointVelocities v = walk.step(last.joints(), last.gyro(), last.acc(), request);
         out.reset();
         v.appendTo(out).syn();
