@@ -71,11 +71,11 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
     /** The tuned walk (see motion/README.md for the measured figures and the command). */
     public static final WalkConfig DEFAULT = new WalkConfig(
             // timing and swing: stepSeconds, doubleSupport, stepHeight, liftExponent, swingMatchGround, swingLinear
-            0.12, 0.05, 0.025, 1.0, 0.3, 0.0,
+            0.12, 0.0, 0.025, 1.0, 0.4, 0.0,
             // posture: legExtension, footForward, stanceWidth, torsoLeanDeg, swayAmplitude, swayLead
             0.88, -0.025, 0.0, 6.0, 0.007, 0.0,
             // limits: maxForward, maxBackward, maxLeft, maxTurnDeg, accelForward, accelLeft, accelTurnDeg, maxFootYawDeg
-            0.75, 0.4, 0.1, 90, 1.0, 1.0, 200, 40,
+            0.85, 0.4, 0.1, 90, 1.0, 1.0, 200, 40,
             // feedback: servoGain, gyroPitchGain, gyroRollGain, gyroYawGain, tiltPlaceForward, tiltPlaceLeft, tiltHipPitch
             1.0, 0.02, 0.0, 0.0, 0.0, 0.0, 0.0,
             // armSwingDeg; odometry scales forward, left, turn
@@ -96,7 +96,7 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
 
     private static final java.util.Map<Integer, WalkConfig> TYPE_OVERRIDES = java.util.Map.of(
             // type 2: no double support, lower steps, no gyro ankle term, slower (scripts/walk-bench search)
-            2, DEFAULT.with("doubleSupport", 0).with("stepHeight", 0.015).with("maxForward", 0.65)
+            2, DEFAULT.with("swingMatchGround", 0.3).with("stepHeight", 0.015).with("maxForward", 0.65)
                     .with("gyroPitchGain", 0).with("tiltPlaceForward", -0.002));
 
     public WalkConfig {

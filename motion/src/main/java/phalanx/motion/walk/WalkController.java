@@ -46,10 +46,14 @@ public final class WalkController {
     }
 
     /**
-     * One cycle: the joint readings (degrees) and gyro (deg/s, torso frame; null when absent) of the
-     * message being answered, and the requested velocity. Returns the hinge velocities to send.
+     * One cycle: the joint readings (degrees), gyro (deg/s) and accelerometer (m/s², both torso frame)
+     * of the message being answered, and the requested velocity; any of them may be null (absent
+     * from the message): no readings give no commands, no request means stop. Returns the hinge
+     * velocities to send.
      */
     public JointVelocities step(JointAngles current, Vector3 gyro, Vector3 acc, WalkVelocity request) {
+        if (current == null) current = JointAngles.none();   // a message without joint readings: no commands
+        if (request == null) request = WalkVelocity.ZERO;
         boolean haveGyro = gyro != null && gyro.isFinite();
         tilt(gyro, acc);
         double pitchErr = pitchForward - config.torsoLeanDeg();

@@ -13,19 +13,21 @@ import java.util.Map;
  * @param search      fields to tune by coordinate descent, with their first step: {@code name:step}
  * @param rounds      coordinate-descent rounds (each halves the steps)
  * @param searchSeconds length of one forward trial of the search
+ * @param starts      forward trials are repeated from this many start points 0.7 m apart (the
+ *                    server is deterministic: only another start gives another outcome)
  */
 public record WalkTrialOptions(String host, int port, int monitorPort, List<Integer> types, List<String> scenarios,
                                Map<String, Double> set, Map<String, Double> search, int rounds, double searchSeconds,
-                               double turnSeconds, double sideSeconds) {
+                               double turnSeconds, double sideSeconds, int starts) {
 
     public static final List<String> SCENARIOS = List.of("forward10", "forward60", "turn", "side");
     public static final String USAGE = "usage: walk-bench [--host 127.0.0.1] [--port 3100] [--monitor-port 3200] [--type 0,2,4]"
             + " [--scenarios forward10,forward60,turn,side] [--set field=value,...] [--search field:step,...]"
-            + " [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10]";
+            + " [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10] [--starts 1]";
 
     public static WalkTrialOptions parse(String... args) {
         String host = "127.0.0.1";
-        int port = 3100, monitorPort = 3200, rounds = 3;
+        int port = 3100, monitorPort = 3200, rounds = 3, starts = 1;
         double searchSeconds = 15, turnSeconds = 10, sideSeconds = 10;
         List<Integer> types = List.of(0, 2, 4);
         List<String> scenarios = SCENARIOS;
@@ -40,6 +42,7 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
                 case "--port" -> port = (int) number(flag, v, 1, 65535, true);
                 case "--monitor-port" -> monitorPort = (int) number(flag, v, 1, 65535, true);
                 case "--rounds" -> rounds = (int) number(flag, v, 1, 20, true);
+                case "--starts" -> starts = (int) number(flag, v, 1, 10, true);
                 case "--search-seconds" -> searchSeconds = number(flag, v, 2, 600, false);
                 case "--turn-seconds" -> turnSeconds = number(flag, v, 1, 600, false);
                 case "--side-seconds" -> sideSeconds = number(flag, v, 1, 600, false);
@@ -66,7 +69,7 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
             }
         }
         return new WalkTrialOptions(host, port, monitorPort, types, scenarios, Map.copyOf(set), java.util.Collections.unmodifiableMap(search),
-                rounds, searchSeconds, turnSeconds, sideSeconds);
+                rounds, searchSeconds, turnSeconds, sideSeconds, starts);
     }
 
     /** The default walk config with the {@code --set} overrides; a bad field or value gets its message. */

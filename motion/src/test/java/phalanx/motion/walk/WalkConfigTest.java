@@ -27,4 +27,13 @@ class WalkConfigTest {
         String d = WalkConfig.DEFAULT.describe();
         for (String f : WalkConfig.FIELDS) assertTrue(d.contains(f + "="), f);
     }
+
+    @Test
+    void perTypeConfigs() {
+        assertSame(WalkConfig.DEFAULT, WalkConfig.forType(0));
+        assertSame(WalkConfig.DEFAULT, WalkConfig.forType(4));
+        assertEquals(0.65, WalkConfig.forType(2).maxForward()); // type 2 has its own tuning
+        for (int t = 0; t <= 4; t++) assertNotNull(WalkConfig.forType(t));
+        assertThrows(IllegalArgumentException.class, () -> WalkConfig.forType(5));
+    }
 }

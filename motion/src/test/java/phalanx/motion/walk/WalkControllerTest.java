@@ -107,4 +107,12 @@ class WalkControllerTest {
         assertTrue(v.has(Joint.LLJ7));
         assertTrue(Double.isFinite(v.radPerSecond(Joint.LLJ3)));
     }
+
+    @Test
+    void aMessageWithoutJointsOrRequestGivesNoCommandsAndNoCrash() {
+        WalkController w = new WalkController(WalkConfig.DEFAULT, 0, MotionConfig.DEFAULT);
+        JointVelocities v = w.step(null, null, null, null);
+        for (Joint j : Joint.values()) assertFalse(v.has(j), j + " got a command without a reading");
+        assertFalse(w.walking());
+    }
 }

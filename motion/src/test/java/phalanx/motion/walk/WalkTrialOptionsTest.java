@@ -24,7 +24,7 @@ class WalkTrialOptionsTest {
     @Test
     void flagsAreRead() {
         WalkTrialOptions o = WalkTrialOptions.parse("--port", "3910", "--monitor-port", "3920", "--type", "1,3",
-                "--scenarios", "turn,forward10", "--set", "stepSeconds=0.2,maxForward=0.5", "--search", "stepHeight:0.01", "--rounds", "2");
+                "--scenarios", "turn,forward10", "--set", "stepSeconds=0.2,maxForward=0.5", "--search", "stepHeight:0.01", "--rounds", "2", "--starts", "3");
         assertEquals(3910, o.port());
         assertEquals(List.of(1, 3), o.types());
         assertEquals(List.of("turn", "forward10"), o.scenarios());
@@ -32,6 +32,7 @@ class WalkTrialOptionsTest {
         assertEquals(0.5, o.config().maxForward());
         assertEquals(0.01, o.search().get("stepHeight"));
         assertEquals(2, o.rounds());
+        assertEquals(3, o.starts());
     }
 
     @Test
@@ -48,6 +49,7 @@ class WalkTrialOptionsTest {
         assertTrue(error("--set", "stepSeconds=5").contains("stepSeconds must be in"));
         assertTrue(error("--search", "stepSeconds:-1").contains("--search stepSeconds must be in"));
         assertTrue(error("--bogus", "1").contains("unknown flag '--bogus'"));
+        assertTrue(error("--starts", "0").contains("--starts must be in"));
         assertTrue(error("--help").startsWith("usage: walk-bench"));
     }
 }
