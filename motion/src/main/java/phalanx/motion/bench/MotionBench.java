@@ -283,7 +283,11 @@ public final class MotionBench {
             total += d;
             prev = y;
         }
-        return total / (simTime() - t0);
+        double rate = total / (simTime() - t0);
+        boolean fell = fallen();
+        System.err.printf(Locale.ROOT, "  %s: %.1f deg/s%s%n", motion, rate, fell ? ", fell (counted as 0)" : "");
+        if (fell) getUpQuietly();
+        return fell ? 0 : rate; // turning while falling over is no turn
     }
 
     /** {distance m, direction error deg} of a right-foot kick from a standing start. */
