@@ -82,9 +82,9 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
             75, 1.0, 1.0, 1.0);
 
     /**
-     * The tuned walk for robot type 0-4 (-1 = nao.rsg = type 0). Types 0 and 4 share the default;
-     * type 2 (same legs, faster ankle pitch, slower ankle roll) and the long-legged types 1 and 3
-     * have their own tuning where it measured better (motion/README.md).
+     * The tuned walk for robot type 0-4 (-1 = nao.rsg = type 0). Types 0, 2 and 4 (the same legs)
+     * share the default; the long-legged types 1 and 3 use it too until a tuning of their own
+     * measures better (motion/README.md).
      */
     public static WalkConfig forType(int type) {
         return switch (type) {
@@ -94,10 +94,8 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
         };
     }
 
-    private static final java.util.Map<Integer, WalkConfig> TYPE_OVERRIDES = java.util.Map.of(
-            // type 2: no double support, lower steps, no gyro ankle term, slower (scripts/walk-bench search)
-            2, DEFAULT.with("swingMatchGround", 0.3).with("stepHeight", 0.015).with("maxForward", 0.65)
-                    .with("gyroPitchGain", 0).with("tiltPlaceForward", -0.002));
+    /** Types whose own tuning measured better than the default (none at present; see forType). */
+    private static final java.util.Map<Integer, WalkConfig> TYPE_OVERRIDES = java.util.Map.of();
 
     public WalkConfig {
         range(stepSeconds, 0.04, 1.0, "stepSeconds");

@@ -35,12 +35,13 @@ public final class WalkController {
     }
 
     /**
-     * The hinge speed cap of a joint in rad/s: the motion config's cap, except type 2's faster ankle
-     * pitch (8.80667) and slower ankle roll (3.47234) (naorobottypes.rb). Commanding more than the
-     * server grants would spoil the prediction of where the joint is.
+     * The hinge speed cap of a joint in rad/s: the motion config's cap, except type 2's slower ankle
+     * roll (3.47234, naorobottypes.rb): commanding more than the server grants would spoil the
+     * prediction of where the joint is. Type 2's faster ankle pitch (8.80667) is not used: with it
+     * the walk fell within 30 s at 0.65 m/s; capped like the other types it walks 0.79 m/s
+     * (motion/README.md).
      */
     static double speedCap(int type, Joint j, double defaultCap) {
-        if (type == 2 && (j == Joint.LLJ5 || j == Joint.RLJ5)) return Math.max(defaultCap, 8.80667);
         if (type == 2 && (j == Joint.LLJ6 || j == Joint.RLJ6)) return Math.min(defaultCap, 3.47234);
         return defaultCap;
     }

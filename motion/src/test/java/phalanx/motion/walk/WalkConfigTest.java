@@ -32,7 +32,7 @@ class WalkConfigTest {
     void perTypeConfigs() {
         assertSame(WalkConfig.DEFAULT, WalkConfig.forType(0));
         assertSame(WalkConfig.DEFAULT, WalkConfig.forType(4));
-        assertEquals(0.65, WalkConfig.forType(2).maxForward()); // type 2 has its own tuning
+        assertSame(WalkConfig.DEFAULT, WalkConfig.forType(2));
         for (int t = 0; t <= 4; t++) assertNotNull(WalkConfig.forType(t));
         assertThrows(IllegalArgumentException.class, () -> WalkConfig.forType(5));
     }
