@@ -75,7 +75,7 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
             // posture: legExtension, footForward, stanceWidth, torsoLeanDeg, swayAmplitude, swayLead
             0.88, -0.01, 0.0, 6.0, 0.007, 0.0,
             // limits: maxForward, maxBackward, maxLeft, maxTurnDeg, accelForward, accelLeft, accelTurnDeg, maxFootYawDeg
-            0.88, 0.4, 0.1, 90, 0.5, 1.0, 200, 40,
+            0.88, 0.4, 0.1, 90, 0.4, 1.0, 200, 40,
             // feedback: servoGain, gyroPitchGain, gyroRollGain, gyroYawGain, tiltPlaceForward, tiltPlaceLeft, tiltHipPitch
             1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
             // armSwingDeg; odometry scales forward, left, turn
