@@ -71,13 +71,13 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
     /** The tuned walk (see motion/README.md for the measured figures and the command). */
     public static final WalkConfig DEFAULT = new WalkConfig(
             // timing and swing: stepSeconds, doubleSupport, stepHeight, liftExponent, swingMatchGround, swingLinear
-            0.12, 0.0, 0.025, 1.0, 0.4, 0.0,
+            0.12, 0.0, 0.021, 1.0, 0.4, 0.0,
             // posture: legExtension, footForward, stanceWidth, torsoLeanDeg, swayAmplitude, swayLead
-            0.88, -0.025, 0.0, 6.0, 0.007, 0.0,
+            0.88, -0.01, 0.0, 6.0, 0.007, 0.0,
             // limits: maxForward, maxBackward, maxLeft, maxTurnDeg, accelForward, accelLeft, accelTurnDeg, maxFootYawDeg
-            0.85, 0.4, 0.1, 90, 1.0, 1.0, 200, 40,
+            0.88, 0.4, 0.1, 90, 0.4, 1.0, 200, 40,
             // feedback: servoGain, gyroPitchGain, gyroRollGain, gyroYawGain, tiltPlaceForward, tiltPlaceLeft, tiltHipPitch
-            1.0, 0.02, 0.0, 0.0, 0.0, 0.0, 0.0,
+            1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
             // armSwingDeg; odometry scales forward, left, turn
             75, 1.0, 1.0, 1.0);
 
