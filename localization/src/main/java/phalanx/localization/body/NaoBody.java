@@ -3,48 +3,40 @@ package phalanx.localization.body;
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.JointAngles;
 
+import phalanx.comm.robot.NaoDimensions;
+
 /**
- * The simulated Nao's dimensions that localization needs, per robot type (heterogeneous types 0-4).
- * Source: SimSpark rcssserver3d {@code rsg/agent/nao/naoneckhead.rsg} (neck 0.09 m above the torso
- * centre, head 0.065 m above the neck, the head pitch hinge 0.005 m below the head centre, the
- * RestrictedVisionPerceptor on the head node itself) and {@code naoleg.rsg} with the type table of
- * {@code naosoccersim.rb} (hip 0.115 m below the torso; hip-knee = -ThighRelHip2_Z + 0.08,
- * knee-ankle = 0.045 - AnkleRelShank_Z; ankle 0.04 above the foot centre, the sole 0.01 below it),
- * as published in github.com/UNSWComputing/SimSpark. Lengths in metres.
+ * The simulated Nao's body as localization uses it: the lengths of {@link NaoDimensions} (the one
+ * table per robot type) and the leg's forward kinematics for leg odometry and the camera height.
  *
  * @param thigh hip pitch axis to knee axis
  * @param shank knee axis to ankle axis
  */
 public record NaoBody(int type, double thigh, double shank) {
 
-    /** Torso centre to the neck yaw joint. */
-    public static final double NECK_ABOVE_TORSO = 0.09;
-    /** Neck to the head centre, where the camera is. */
-    public static final double HEAD_ABOVE_NECK = 0.065;
-    /** The head pitch hinge sits this far below the head centre. */
-    public static final double PITCH_AXIS_BELOW_HEAD = 0.005;
-    /** Torso centre down to the hip pitch axis. */
-    public static final double HIP_BELOW_TORSO = 0.115;
-    /** Ankle axis down to the sole (foot centre 0.04 below, half the 0.02 m foot box). */
-    public static final double SOLE_BELOW_ANKLE = 0.05;
+    public static final double NECK_ABOVE_TORSO = NaoDimensions.NECK_ABOVE_TORSO;
+    public static final double HEAD_ABOVE_NECK = NaoDimensions.HEAD_ABOVE_NECK;
+    public static final double PITCH_AXIS_BELOW_HEAD = NaoDimensions.PITCH_AXIS_BELOW_HEAD;
+    public static final double HIP_BELOW_TORSO = NaoDimensions.HIP_BELOW_TORSO;
+    public static final double SOLE_BELOW_ANKLE = NaoDimensions.SOLE_BELOW_ANKLE;
 
-    private static final NaoBody[] TYPES = {
-            new NaoBody(0, 0.12, 0.10),
-            new NaoBody(1, 0.05832 + 0.08, 0.045 + 0.07332),
-            new NaoBody(2, 0.12, 0.10),
-            new NaoBody(3, 0.067868424 + 0.08, 0.045 + 0.082868424),
-            new NaoBody(4, 0.12, 0.10),
-    };
+    private static final NaoBody[] TYPES = new NaoBody[5];
+    static {
+        for (int t = 0; t < TYPES.length; t++) {
+            NaoDimensions d = NaoDimensions.ofType(t);
+            TYPES[t] = new NaoBody(t, d.thigh(), d.shank());
+        }
+    }
 
     /** The body of a heterogeneous robot type 0-4 (type 0 is plain nao.rsg). */
     public static NaoBody ofType(int type) {
-        if (type < 0 || type >= TYPES.length) throw new IllegalArgumentException("robot type must be 0-4, got " + type);
+        NaoDimensions.ofType(type); // refuses an unknown type with its number
         return TYPES[type];
     }
 
     /** Torso centre above the soles with straight legs and an upright torso. */
     public double standingTorsoHeight() {
-        return HIP_BELOW_TORSO + thigh + shank + SOLE_BELOW_ANKLE;
+        return NaoDimensions.ofType(type).standingTorsoHeight();
     }
 
     /**

@@ -1,9 +1,10 @@
 package phalanx.motion.kinematics;
 
+import phalanx.comm.robot.NaoDimensions;
+
 /**
- * Lengths of the simulated Nao that the kinematics need, in metres, per robot type (the server's
- * naoleg.rsg with the per-type values of nao_hetero; checked against the standing torso heights in
- * the recordings README: 0.3839 for types 0/2/4, 0.4205 for type 1, 0.4396 for type 3).
+ * Lengths of the simulated Nao that the kinematics need, in metres, per robot type, taken from
+ * {@link NaoDimensions} (the one table, shared with localization).
  *
  * @param hipBelowTorso   torso centre to the hip pitch axis (vertical)
  * @param hipHalfWidth    torso centre to a hip (lateral)
@@ -15,16 +16,18 @@ package phalanx.motion.kinematics;
 public record LegGeometry(double hipBelowTorso, double hipHalfWidth, double thigh, double shank,
                           double ankleAboveSole, double cameraAboveTorso) {
 
-    public static final LegGeometry TYPE_0 = new LegGeometry(0.115, 0.055, 0.12, 0.10, 0.05, 0.155);
+    public static final LegGeometry TYPE_0 = of(NaoDimensions.ofType(0));
 
     /** Geometry of robot type 0-4 (-1 = nao.rsg, the same as type 0). */
     public static LegGeometry forType(int type) {
-        return switch (type) {
-            case -1, 0, 2, 4 -> TYPE_0;
-            case 1 -> new LegGeometry(0.115, 0.055, 0.13832, 0.11832, 0.05, 0.155);
-            case 3 -> new LegGeometry(0.115, 0.072954143, 0.147868424, 0.127868424, 0.05, 0.155);
-            default -> throw new IllegalArgumentException("robot type must be 0-4 (or -1 for nao.rsg), got " + type);
-        };
+        if (type < -1 || type > 4) throw new IllegalArgumentException("robot type must be 0-4 (or -1 for nao.rsg), got " + type);
+        if (type == -1 || type == 0) return TYPE_0;
+        return of(NaoDimensions.ofType(type));
+    }
+
+    private static LegGeometry of(NaoDimensions d) {
+        return new LegGeometry(NaoDimensions.HIP_BELOW_TORSO, d.hipHalfWidth(), d.thigh(), d.shank(),
+                NaoDimensions.SOLE_BELOW_ANKLE, NaoDimensions.cameraAboveTorso());
     }
 
     /** Torso centre height when standing straight, all joints 0. */
