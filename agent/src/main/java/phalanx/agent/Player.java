@@ -1,6 +1,9 @@
 package phalanx.agent;
 
 import phalanx.agent.act.Body;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.HeadTarget;
+import phalanx.agent.decide.Move;
 import phalanx.agent.action.FieldPlayerBehaviour;
 import phalanx.agent.goalkeeper.GoalkeeperBehaviour;
 import phalanx.agent.roboviz.RoboViz;
@@ -98,15 +101,22 @@ public final class Player {
         TeamKey key = teamKey(o.team());
         Body body = new Body(new MotionController(library, MotionConfig.DEFAULT), WalkConfig.forType(o.robotType()), o.robotType());
         return new PlayerParts(beliefs, body, field, draw, (unum, self) -> {
-            if (unum == channel.coordinator()) {
-                GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(AgentConfig.forRobotType(o.robotType())));
-                TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,
-                        self::playMode, keeper::hasBall);
-                return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
-            }
-            return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum),
-                    new FieldBrain(new FieldPlayerBehaviour(AgentConfig.forRobotType(o.robotType())), unum, o.players(), CoordinationConfig.THESIS));
+            PlayerParts.Role role = role(o, field, beliefs, channel, key, unum, self);
+            // thesis 6.3's "empty" player: on the team channel as usual, but no motion and no head tracking
+            return o.still() ? new PlayerParts.Role(role.channel(), (s, c) -> Decision.of(Move.STAND, HeadTarget.STRAIGHT)) : role;
         });
+    }
+
+    private static PlayerParts.Role role(PlayerOptions o, FieldSpec field, BeliefStore beliefs, ChannelConfig channel,
+                                         TeamKey key, int unum, PlayerParts self) {
+        if (unum == channel.coordinator()) {
+            GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(AgentConfig.forRobotType(o.robotType())));
+            TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,
+                    self::playMode, keeper::hasBall);
+            return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
+        }
+        return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum),
+                new FieldBrain(new FieldPlayerBehaviour(AgentConfig.forRobotType(o.robotType())), unum, o.players(), CoordinationConfig.THESIS));
     }
 
     /**

@@ -5,7 +5,7 @@ import java.nio.file.Paths;
 
 /** The player's command line (issue 8). {@link #parse} names the flag at fault. */
 public record PlayerOptions(String host, int port, String team, int unum, int players, int robotType,
-                            Path logDir, long connectTimeoutMillis, Path motions, String roboviz) {
+                            Path logDir, long connectTimeoutMillis, Path motions, String roboviz, boolean still) {
 
     public static final String USAGE = """
             usage: phalanx-player [--host H] [--port P] [--team NAME] [--unum N] [--players 9|11] [--type T] [--log-dir DIR]
@@ -18,10 +18,12 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
               --log-dir DIR  directory for this player's log (default: no log file, stderr only)
               --connect-timeout S  seconds to keep retrying while no server listens (default 30)
               --motions DIR  the motion files (default: motions/ in the working directory)
-              --roboviz H[:P]  draw beliefs into RoboViz at H (port 32769 by default); off by default""";
+              --roboviz H[:P]  draw beliefs into RoboViz at H (port 32769 by default); off by default
+              --behaviour B  play (default) or still: beam, stand and do nothing else (the "empty"
+                             goalkeeper of the thesis's test 6.3)""";
 
     public static PlayerOptions defaults() {
-        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null);
+        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false);
     }
 
     /** Parses flags; throws IllegalArgumentException whose message names the bad flag and value. */
@@ -33,6 +35,7 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
         long connectMillis = o.connectTimeoutMillis;
         Path motions = o.motions;
         String roboviz = null;
+        boolean still = false;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("-h") || flag.equals("--help")) throw new IllegalArgumentException("help");
@@ -53,11 +56,15 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                 case "--connect-timeout" -> connectMillis = intIn(flag, v, 0, 3600) * 1000L;
                 case "--motions" -> motions = Paths.get(v);
                 case "--roboviz" -> roboviz = v;
+                case "--behaviour" -> {
+                    if (!v.equals("play") && !v.equals("still")) throw new IllegalArgumentException("--behaviour must be play or still, got '" + v + "'");
+                    still = v.equals("still");
+                }
                 default -> throw new IllegalArgumentException("unknown flag " + flag);
             }
         }
         if (unum > players) throw new IllegalArgumentException("--unum " + unum + " is more than --players " + players);
-        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz);
+        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz, still);
     }
 
     private static int intIn(String flag, String v, int min, int max) {
