@@ -9,7 +9,7 @@ import java.nio.file.Path;
  */
 public record MatchConfig(TeamCommand first, TeamCommand second, ServerProcess.Settings server, int players,
                           double connectTimeout, double connectQuiet, double settle, double stall,
-                          double maxWall, Path dir, Path out, Path workDir) {
+                          double maxWall, Path dir, Path out, Path workDir, boolean allowEmpty) {
 
     /** The wall-clock limit when none is given: six times the game length plus the start-up. */
     public static double defaultMaxWall(ServerProcess.Settings s, double connectTimeout) {

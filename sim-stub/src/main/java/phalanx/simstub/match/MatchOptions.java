@@ -9,7 +9,7 @@ import java.util.Set;
 final class MatchOptions {
     static final Set<String> VALUED = Set.of("agent-port", "monitor-port", "half-time", "halves", "players",
             "connect-timeout", "connect-quiet", "settle", "stall", "max-wall");
-    static final Set<String> FLAGS = Set.of("sync", "fast");
+    static final Set<String> FLAGS = Set.of("sync", "fast", "allow-empty");
     static final String HELP = """
               --sync               agent-sync mode: the server waits for every player's (syn) each cycle
                                    (no lost cycles on a slow machine; still never faster than real time)
@@ -22,7 +22,8 @@ final class MatchOptions {
               --connect-quiet S    a team is complete when no player joined for S seconds (default 15)
               --settle S           between the last player and each kick-off (default 3)
               --stall S            give up when the monitor is silent this long (default 60)
-              --max-wall S         give up after this many wall seconds (default 6 x game length + start-up)""";
+              --max-wall S         give up after this many wall seconds (default 6 x game length + start-up)
+              --allow-empty        play even if a team puts no player on the field (thesis 6.3's "no goalkeeper")""";
 
     private MatchOptions() { }
 
@@ -43,7 +44,7 @@ final class MatchOptions {
         return new MatchConfig(first, second, s, a.integer("players", 11, 1, 11), connect,
                 a.number("connect-quiet", 15, 1, 600), a.number("settle", 3, 0, 600), a.number("stall", 60, 5, 3600),
                 a.number("max-wall", MatchConfig.defaultMaxWall(s, connect), 10, 1e6), dir, out,
-                Path.of(System.getProperty("user.dir")));
+                Path.of(System.getProperty("user.dir")), a.flag("allow-empty"));
     }
 
     static String stamp() { return LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")); }

@@ -117,7 +117,7 @@ public final class MatchRunner {
             }
         }
         for (Team t : teams) {
-            if (t.side == null) return "team " + t.command.label() + " has no players on the field"
+            if (t.side == null && !(cfg.allowEmpty() && t.startError == null)) return "team " + t.command.label() + " has no players on the field"
                     + (t.startError != null ? " (" + t.startError + ")" : "");
         }
         say("%s left (%d players), %s right (%d players)", label(Side.LEFT), follower.present(Side.LEFT).size(),
