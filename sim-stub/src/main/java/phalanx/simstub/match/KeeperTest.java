@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.HashSet;
 import java.util.stream.Stream;
 
 /**
@@ -50,13 +49,8 @@ public final class KeeperTest {
 
     public static void main(String[] argv) {
         try {
-            if (argv.length == 0 || argv[0].equals("-h") || argv[0].equals("--help")) {
-                System.out.println(USAGE);
-                System.exit(argv.length == 0 ? 2 : 0);
-            }
-            Set<String> valued = new HashSet<>(MatchOptions.VALUED);
-            valued.addAll(Set.of("attacker", "conditions", "games", "out", "report"));
-            Args a = new Args(argv, valued, MatchOptions.FLAGS, "keeper-test");
+            Set<String> own = Set.of("attacker", "conditions", "games", "out", "report");
+            Args a = MatchOptions.parse(argv, USAGE, "keeper-test", own, Set.of());
             if (a.get("report", null) != null) {
                 System.out.print(report(Path.of(a.get("report", null))));
                 System.exit(0);
@@ -71,7 +65,7 @@ public final class KeeperTest {
             List<String> args = new ArrayList<>(List.of(argv));
             if (a.get("halves", null) == null) args.addAll(List.of("--halves", "1"));
             args.add("--allow-empty");
-            Args match = new Args(args.toArray(String[]::new), valued, MatchOptions.FLAGS, "keeper-test");
+            Args match = MatchOptions.parse(args.toArray(String[]::new), USAGE, "keeper-test", own, Set.of());
             for (Condition c : conditions) {
                 for (int g = 1; g <= games; g++) {
                     String tag = String.format(Locale.ROOT, "%s-%02d", c.name(), g);

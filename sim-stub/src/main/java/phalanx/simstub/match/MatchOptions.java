@@ -27,6 +27,22 @@ final class MatchOptions {
 
     private MatchOptions() { }
 
+    /**
+     * A main's command line: the match options plus the program's own; no argument prints the usage
+     * and exits 2, -h/--help prints it and exits 0.
+     */
+    static Args parse(String[] argv, String usage, String program, Set<String> valued, Set<String> flags) {
+        if (argv.length == 0 || argv[0].equals("-h") || argv[0].equals("--help")) {
+            System.out.println(usage);
+            System.exit(argv.length == 0 ? 2 : 0);
+        }
+        Set<String> v = new java.util.HashSet<>(VALUED);
+        v.addAll(valued);
+        Set<String> f = new java.util.HashSet<>(FLAGS);
+        f.addAll(flags);
+        return new Args(argv, v, f, program);
+    }
+
     /** Server settings; the ports are chosen now (free ones from 3500 on unless given). */
     static ServerProcess.Settings server(Args a) {
         boolean fast = a.flag("fast");

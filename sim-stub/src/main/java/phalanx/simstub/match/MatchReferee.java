@@ -1,7 +1,6 @@
 package phalanx.simstub.match;
 
 import java.nio.file.Path;
-import java.util.HashSet;
 import java.util.Set;
 
 /**
@@ -23,13 +22,7 @@ public final class MatchReferee {
     public static void main(String[] argv) {
         MatchRunner runner;
         try {
-            if (argv.length == 0 || argv[0].equals("-h") || argv[0].equals("--help")) {
-                System.out.println(USAGE);
-                System.exit(argv.length == 0 ? 2 : 0);
-            }
-            Set<String> valued = new HashSet<>(MatchOptions.VALUED);
-            valued.addAll(Set.of("left", "right", "dir", "out"));
-            Args a = new Args(argv, valued, MatchOptions.FLAGS, "match");
+            Args a = MatchOptions.parse(argv, USAGE, "match", Set.of("left", "right", "dir", "out"), Set.of());
             if (a.get("left", null) == null || a.get("right", null) == null) {
                 throw new IllegalArgumentException("match: both --left and --right are needed");
             }

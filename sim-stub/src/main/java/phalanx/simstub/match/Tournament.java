@@ -59,15 +59,8 @@ public final class Tournament {
 
     public static void main(String[] argv) {
         try {
-            if (argv.length == 0 || argv[0].equals("-h") || argv[0].equals("--help")) {
-                System.out.println(USAGE);
-                System.exit(argv.length == 0 ? 2 : 0);
-            }
-            Set<String> valued = new HashSet<>(MatchOptions.VALUED);
-            valued.addAll(Set.of("team", "us", "games", "out", "report"));
-            Set<String> flags = new HashSet<>(MatchOptions.FLAGS);
-            flags.addAll(Set.of("round-robin", "quiet"));
-            Args a = new Args(argv, valued, flags, "tournament");
+            Args a = MatchOptions.parse(argv, USAGE, "tournament", Set.of("team", "us", "games", "out", "report"),
+                    Set.of("round-robin", "quiet"));
             if (a.get("report", null) != null) {
                 System.exit(report(Path.of(a.get("report", null)), a.get("us", null), System.out));
             }
