@@ -99,7 +99,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     /**
      * @param spotOffset        guard spot this far in front of the goal line (ours; coordination's GK spot too)
      * @param diveSeconds       time from requesting a dive until the body covers the side (5.13 "the time
-     *                          it takes for our agent to fall"; ours until motion-bench measures dive_*.xml)
+     *                          it takes for our agent to fall"): dive_left/right.xml reach 90 % of their
+     *                          0.70 m lateral reach 0.58-0.60 s after the request on types 0, 2 and 4
+     *                          (`scripts/motion-bench --only dive`, motion/README.md "Dives")
      * @param postMargin        Threshold_Left/Right = goal half width + this (5.13; the margin is ours)
      * @param bodyBlock         a ball crossing closer than this to the keeper's centre is left to the body (ours)
      * @param ballDecay         rolling ball velocity decay rate, 1/s: v(t) = v0·e^(−k·t) (ours: 1.053

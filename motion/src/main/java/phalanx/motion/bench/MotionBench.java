@@ -361,8 +361,7 @@ public final class MotionBench {
         double dist = Math.hypot(dx, dy);
         double err = dist < 0.05 ? Double.NaN : Math.toDegrees(Math.atan2(Math.sin(Math.atan2(dy, dx) - h), Math.cos(Math.atan2(dy, dx) - h)));
         System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s%n", motion, dist, err, fell ? ", fell" : "");
-        if (fallen()) getUpQuietly();
-        return new double[] {dist, Math.abs(err), fell ? 1 : 0};
+        return new double[] {dist, Math.abs(err), fell ? 1 : 0}; // the next place() stands it up again
     }
 
     private void getUpQuietly() throws IOException {
@@ -469,8 +468,7 @@ public final class MotionBench {
         if (stopped) st.stopped++;
         System.err.printf(Locale.ROOT, "  %s: down after %.2f s, reach %.2f m (90%% after %.2f s), shot at %.2f m %s%n",
                 motion, down, reach, reachSeconds, opt.diveOffset(), stopped ? "stopped" : "passed");
-        trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042) (vel 0 0 0))", startX + 6, startY));
-        if (fallen()) getUpQuietly();
+        trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042) (vel 0 0 0))", startX + 6, startY)); // the next place() stands it up
     }
 
     // --- report -------------------------------------------------------------------------------
