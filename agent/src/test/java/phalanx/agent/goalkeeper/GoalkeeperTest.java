@@ -8,7 +8,7 @@ import phalanx.localization.fall.FallState;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-/** Thesis 5.13 with the keeper on its spot (-14.5, 0) facing the field, dive time 0.6 s, k = 1.06 /s. */
+/** Thesis 5.13 with the keeper on its spot (-14.5, 0) facing the field, dive time 0.7 s, k = 1.06 /s. */
 class GoalkeeperTest {
     private static final AgentConfig C = AgentConfig.DEFAULT;
 
@@ -26,7 +26,7 @@ class GoalkeeperTest {
 
     @Test
     void divesToTheSideTheBallWillCross() {
-        // 1 m out, 0.4 m left, (-3, 0.2) m/s: e^(-kt) = 1 - 1.06/3 = 0.647, t = 0.41 s <= 0.6 s; crosses at y = 0.467.
+        // 1 m out, 0.4 m left, (-3, 0.2) m/s: e^(-kt) = 1 - 1.06/3 = 0.647, t = 0.41 s <= 0.7 s; crosses at y = 0.467.
         Goalkeeper left = guarding();
         assertEquals(new Move.Dive(true), left.decide(shot(1, 0.4, -3, 0.2).situation()).move());
         assertEquals(Goalkeeper.State.DIVING, left.state());
@@ -40,7 +40,7 @@ class GoalkeeperTest {
         assertNoDive(shot(1, 1.4, -3, 0.6));
         // Too slow: reach 0.5 / 1.06 = 0.47 m, it stops before the line.
         assertNoDive(shot(1, 0.4, -0.5, 0));
-        // Not yet: 3 m out at 6 m/s, t = -ln(1 - 1.06 * 3 / 6) / 1.06 = 0.71 s > 0.6 s.
+        // Not yet: 3 m out at 6 m/s, t = -ln(1 - 1.06 * 3 / 6) / 1.06 = 0.71 s > 0.7 s.
         assertNoDive(shot(3, 0.5, -6, 0));
         // ... but 2.5 m out at 6 m/s it is t = -ln(1 - 1.06 * 2.5 / 6) / 1.06 = 0.55 s: dive.
         assertEquals(new Move.Dive(true), guarding().decide(shot(2.5, 0.5, -6, 0).situation()).move());

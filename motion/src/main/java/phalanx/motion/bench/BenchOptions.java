@@ -9,12 +9,20 @@ import java.util.List;
  *
  * @param types robot types to measure (the server needs at least three types in a team of eleven,
  *              DESIGN.md, so the team fields 0, 1 and 2 at least)
+ * @param kicks       kick motions the kick trial plays; a name ending in {@code _left} kicks with the
+ *                    left foot and gets the ball on the left
+ * @param ballAhead   kick trial: the ball's centre this far ahead of the torso centre (m)
+ * @param ballSide    kick trial: and this far to the side of the kicking foot (m)
+ * @param diveOffset  dive trial: the shot passes the keeper's centre this far to the diving side (m)
+ * @param shotSeconds dive trial: the shot crosses the keeper's line this long after the dive request (s)
  */
 public record BenchOptions(String host, int port, int monitorPort, List<Integer> types, int trials,
-                           double walkSeconds, double turnSeconds, Path motions, String only, boolean trace) {
+                           double walkSeconds, double turnSeconds, Path motions, String only, boolean trace,
+                           List<String> kicks, double ballAhead, double ballSide, double diveOffset, double shotSeconds) {
 
     public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
-            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup] [--trace]";
+            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup|dive] [--trace]"
+            + " [--kicks kick,strong_kick] [--ball-ahead 0.17] [--ball-side 0.055] [--dive-offset 0.6] [--shot-seconds 0.8]";
 
     public static BenchOptions parse(String... args) {
         String host = "127.0.0.1";
@@ -24,6 +32,8 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
         Path motions = Path.of("motions");
         String only = null;
         boolean trace = false;
+        List<String> kicks = List.of("kick", "strong_kick");
+        double ballAhead = 0.17, ballSide = 0.055, diveOffset = 0.6, shotSeconds = 0.8;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(USAGE);
@@ -39,9 +49,19 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 case "--turn-seconds" -> turn = number(flag, v, 1, 600, false);
                 case "--motions" -> motions = Path.of(v);
                 case "--only" -> {
-                    if (!List.of("walk", "turn", "kick", "getup").contains(v)) throw new IllegalArgumentException("--only must be walk, turn, kick or getup, got '" + v + "'");
+                    if (!List.of("walk", "turn", "kick", "getup", "dive").contains(v)) throw new IllegalArgumentException("--only must be walk, turn, kick, getup or dive, got '" + v + "'");
                     only = v;
                 }
+                case "--kicks" -> {
+                    List<String> k = new ArrayList<>();
+                    for (String m : v.split(",")) if (!m.isBlank()) k.add(m.strip());
+                    if (k.isEmpty()) throw new IllegalArgumentException("--kicks needs at least one motion name, got '" + v + "'");
+                    kicks = List.copyOf(k);
+                }
+                case "--ball-ahead" -> ballAhead = number(flag, v, 0, 0.5, false);
+                case "--ball-side" -> ballSide = number(flag, v, -0.2, 0.2, false);
+                case "--dive-offset" -> diveOffset = number(flag, v, 0, 2, false);
+                case "--shot-seconds" -> shotSeconds = number(flag, v, 0.1, 3, false);
                 case "--type" -> {
                     List<Integer> t = new ArrayList<>();
                     for (String s : v.split(",")) {
@@ -54,7 +74,8 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
             }
         }
-        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace);
+        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace,
+                kicks, ballAhead, ballSide, diveOffset, shotSeconds);
     }
 
     public boolean runs(String what) { return only == null || only.equals(what); }

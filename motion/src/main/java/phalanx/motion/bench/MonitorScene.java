@@ -63,6 +63,16 @@ public final class MonitorScene {
         return findTorso(root, identity(), unum, "mat" + side);
     }
 
+    /**
+     * The centres of every body part of player {@code unum} (torso, head, arm and leg segments and
+     * the joint markers: each transform node beside the torso's in the player's group), {x, y, z}
+     * each; null when the player is not in the scene. Used for the keeper's lateral reach.
+     */
+    public List<double[]> parts(int unum, String side) {
+        if (root == null) return null;
+        return findParts(root, identity(), unum, "mat" + side);
+    }
+
     /** The ball's centre, {x, y, z}, or null. */
     public double[] ball() {
         if (root == null) return null;
@@ -164,17 +174,40 @@ public final class MonitorScene {
         return c;
     }
 
-    private static Pose findTorso(Node n, double[] world, int unum, String sideMaterial) {
-        double[] w = times(world, n.slt);
-        // n is a torso candidate if a child TRF holds the naobody mesh with the right materials.
+    /** n is a torso if a child TRF holds the naobody mesh with the player's materials. */
+    private static boolean isTorso(Node n, int unum, String sideMaterial) {
         for (Node c : n.children) {
             for (Node mesh : c.children) {
                 if (mesh.load != null && mesh.load.startsWith("models/naobody")
-                        && mesh.materials.contains("matNum" + unum) && mesh.materials.contains(sideMaterial)) {
-                    double[] r = {w[0], w[4], w[8], w[1], w[5], w[9], w[2], w[6], w[10]};
-                    return new Pose(w[12], w[13], w[14], r);
-                }
+                        && mesh.materials.contains("matNum" + unum) && mesh.materials.contains(sideMaterial)) return true;
             }
+        }
+        return false;
+    }
+
+    private static List<double[]> findParts(Node n, double[] world, int unum, String sideMaterial) {
+        double[] w = times(world, n.slt);
+        for (Node c : n.children) {
+            if (!isTorso(c, unum, sideMaterial)) continue;
+            List<double[]> out = new ArrayList<>();
+            for (Node part : n.children) {
+                double[] p = times(w, part.slt);
+                out.add(new double[] {p[12], p[13], p[14]});
+            }
+            return out;
+        }
+        for (Node c : n.children) {
+            List<double[]> p = findParts(c, w, unum, sideMaterial);
+            if (p != null) return p;
+        }
+        return null;
+    }
+
+    private static Pose findTorso(Node n, double[] world, int unum, String sideMaterial) {
+        double[] w = times(world, n.slt);
+        if (isTorso(n, unum, sideMaterial)) {
+            double[] r = {w[0], w[4], w[8], w[1], w[5], w[9], w[2], w[6], w[10]};
+            return new Pose(w[12], w[13], w[14], r);
         }
         for (Node c : n.children) {
             Pose p = findTorso(c, w, unum, sideMaterial);

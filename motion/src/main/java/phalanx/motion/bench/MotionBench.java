@@ -75,6 +75,20 @@ public final class MotionBench {
         List<Double> getupTime = new ArrayList<>();
         int falls;
         double walkMinutes;
+        final java.util.Map<String, KickStats> kicks = new java.util.LinkedHashMap<>();
+        final java.util.Map<String, DiveStats> dives = new java.util.LinkedHashMap<>();
+    }
+
+    /** One kick motion's trials on one type. */
+    static final class KickStats {
+        final List<Double> distance = new ArrayList<>(), dirError = new ArrayList<>();
+        int falls;
+    }
+
+    /** One dive motion's trials on one type. */
+    static final class DiveStats {
+        final List<Double> downSeconds = new ArrayList<>(), reach = new ArrayList<>(), reachSeconds = new ArrayList<>();
+        int stopped, shots;
     }
 
     private void run() throws IOException {
@@ -144,14 +158,8 @@ public final class MotionBench {
                 row.turnL.add(turn("turn_left"));
                 row.turnR.add(-turn("turn_right"));
             }
-            if (opt.runs("kick")) {
-                double[] k = kick("kick");
-                row.kick.add(k[0]);
-                row.kickDir.add(k[1]);
-                double[] s = kick("strong_kick");
-                row.strong.add(s[0]);
-                row.strongDir.add(s[1]);
-            }
+            if (opt.runs("kick")) kicks(row);
+            if (opt.runs("dive")) dives(row);
             if (opt.runs("getup")) {
                 getUp(row, true);
                 getUp(row, false);
@@ -213,6 +221,7 @@ public final class MotionBench {
      */
     private void place(double x, double y) throws IOException {
         controller = new MotionController(library, MotionConfig.DEFAULT); // drop whatever was playing
+        onceStarted = false;
         double[] ready = readyPose();
         for (int i = 0; i < 40; i++) {
             receive();
@@ -290,33 +299,69 @@ public final class MotionBench {
         return fell ? 0 : rate; // turning while falling over is no turn
     }
 
-    /** {distance m, direction error deg} of a right-foot kick from a standing start. */
+    /**
+     * The request that plays a one-shot motion once: the motion until it shows as playing, then
+     * nothing (the controller restarts a one-shot motion still requested when it ends, and one
+     * without a finalize phase then plays twice; the agent's OneShot does the same).
+     */
+    private MotionRequest onceRequest(String motion, boolean interrupting) {
+        if (motion.equals(controller.playing())) onceStarted = true;
+        if (onceStarted) return MotionRequest.NONE;
+        MotionRequest r = MotionRequest.of(motion);
+        return interrupting ? r.interrupting() : r;
+    }
+
+    private boolean onceStarted;
+
+    /** Every kick of {@code --kicks} once; "kick" and "strong_kick" also fill the summary columns. */
+    private void kicks(Row row) throws IOException {
+        for (String motion : opt.kicks()) {
+            double[] k = kick(motion);
+            KickStats st = row.kicks.computeIfAbsent(motion, m -> new KickStats());
+            st.distance.add(k[0]);
+            st.dirError.add(k[1]);
+            if (k[2] > 0) st.falls++;
+            if (motion.equals("kick")) { row.kick.add(k[0]); row.kickDir.add(k[1]); }
+            if (motion.equals("strong_kick")) { row.strong.add(k[0]); row.strongDir.add(k[1]); }
+        }
+    }
+
+    /**
+     * {distance m, direction error deg, 1 if the robot fell} of one kick from a standing start. The
+     * ball lies {@code --ball-ahead} ahead of the torso and {@code --ball-side} to the side of the
+     * kicking foot (right, or left for a motion named *_left). A fall anywhere from the start of the
+     * kick until the ball stops (at least 1 s after the motion ended) counts.
+     */
     private double[] kick(String motion) throws IOException {
         place(0, -3);
         MonitorScene.Pose p = torso();
         double h = Math.toRadians(p.yawDeg());
-        // ball in front of the right foot: 0.17 m ahead of the torso, 0.055 m to its right
-        double bx = p.x() + 0.17 * Math.cos(h) + 0.055 * Math.sin(h), by = p.y() + 0.17 * Math.sin(h) - 0.055 * Math.cos(h);
+        double side = motion.endsWith("_left") ? -opt.ballSide() : opt.ballSide(); // to the right of the torso
+        double bx = p.x() + opt.ballAhead() * Math.cos(h) + side * Math.sin(h), by = p.y() + opt.ballAhead() * Math.sin(h) - side * Math.cos(h);
         trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042))", bx, by));
         hold(10);
         for (int i = 0; i < 100 && Math.hypot(ball()[0] - bx, ball()[1] - by) > 0.01; i++) hold(1); // the monitor may lag
         double[] b0 = ball();
         long done = controller.completions();
-        for (int i = 0; i < 250 && controller.completions() == done; i++) cycle(MotionRequest.of(motion));
+        boolean fell = false;
+        for (int i = 0; i < 250 && controller.completions() == done; i++) {
+            cycle(onceRequest(motion, false));
+            fell |= fallen();
+        }
         double[] prev = ball();
-        for (int i = 0; i < 400; i++) { // until the ball stops (at most 8 s)
+        for (int i = 0; i < 400; i++) { // until the ball stops (at most 8 s), the robot standing at least 1 s
             hold(10);
+            fell |= fallen();
             double[] b = ball();
-            if (Math.hypot(b[0] - prev[0], b[1] - prev[1]) < 0.002) break;
+            if (i >= 5 && Math.hypot(b[0] - prev[0], b[1] - prev[1]) < 0.002) break;
             prev = b;
         }
         double[] b1 = ball();
         double dx = b1[0] - b0[0], dy = b1[1] - b0[1];
         double dist = Math.hypot(dx, dy);
-        double err = dist < 0.05 ? Double.NaN : Math.abs(Math.toDegrees(Math.atan2(Math.sin(Math.atan2(dy, dx) - h), Math.cos(Math.atan2(dy, dx) - h))));
-        System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s%n", motion, dist, err, fallen() ? ", fell" : "");
-        if (fallen()) getUpQuietly();
-        return new double[] {dist, err};
+        double err = dist < 0.05 ? Double.NaN : Math.toDegrees(Math.atan2(Math.sin(Math.atan2(dy, dx) - h), Math.cos(Math.atan2(dy, dx) - h)));
+        System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s%n", motion, dist, err, fell ? ", fell" : "");
+        return new double[] {dist, Math.abs(err), fell ? 1 : 0}; // the next place() stands it up again
     }
 
     private void getUpQuietly() throws IOException {
@@ -366,13 +411,107 @@ public final class MotionBench {
         if (!ok) getUpQuietly();
     }
 
+    // --- dives -------------------------------------------------------------------------------------
+
+    /** Decay rate of a rolling ball, 1/s (agent's AgentConfig.Keeper.ballDecay, scripts/ball-decay). */
+    private static final double BALL_DECAY = 1.06;
+
+    private void dives(Row row) throws IOException {
+        for (String motion : List.of("dive_left", "dive_right")) {
+            DiveStats st = row.dives.computeIfAbsent(motion, m -> new DiveStats());
+            dive(motion, motion.endsWith("_left") ? 1 : -1, st);
+        }
+    }
+
+    /**
+     * One dive from a standing start, the keeper facing +x: a shot rolls along x, 3 m out, passing the
+     * keeper's centre {@code --dive-offset} to the diving side and crossing the keeper's line
+     * {@code --shot-seconds} after the dive is requested (in the same cycle as the shot). Measured:
+     * the time until the torso is down (the bench's fall test), the lateral reach (the farthest body
+     * part's centre to that side of the start, over 2.5 s) and when 90 % of it was reached; the shot
+     * counts as stopped when the ball never gets 0.5 m behind the keeper's start (its goal line when
+     * it stands on its spot, AgentConfig.Keeper.spotOffset).
+     */
+    private void dive(String motion, int side, DiveStats st) throws IOException {
+        double x0 = -3, y0 = 3;
+        place(x0, y0);
+        MonitorScene.Pose p = torso();
+        double startX = p.x(), startY = p.y();
+        double distance = 3;
+        double v = distance * BALL_DECAY / (1 - Math.exp(-BALL_DECAY * opt.shotSeconds()));
+        double ballY = startY + side * opt.diveOffset();
+        trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042) (vel %.3f 0 0))", startX + distance, ballY, -v));
+        double t0 = simTime(), down = Double.NaN, reach = -1, minBallX = Double.POSITIVE_INFINITY;
+        double[] reachAt = new double[125];
+        for (int i = 0; i < 200; i++) {
+            cycle(onceRequest(motion, true));
+            double t = simTime() - t0;
+            if (Double.isNaN(down) && fallen()) down = t;
+            List<double[]> parts;
+            synchronized (scene) { parts = scene.parts(1, "Left"); }
+            if (i < reachAt.length && parts != null) {
+                double m = -1;
+                for (double[] q : parts) m = Math.max(m, side * (q[1] - startY));
+                reach = Math.max(reach, m);
+                reachAt[i] = reach;
+            }
+            double[] b = ball();
+            if (b != null) minBallX = Math.min(minBallX, b[0]);
+        }
+        double reachSeconds = Double.NaN;
+        for (int i = 0; i < reachAt.length; i++) if (reachAt[i] >= 0.9 * reach) { reachSeconds = (i + 1) * 0.02; break; }
+        boolean stopped = minBallX > startX - 0.5;
+        st.downSeconds.add(down);
+        st.reach.add(reach);
+        st.reachSeconds.add(reachSeconds);
+        st.shots++;
+        if (stopped) st.stopped++;
+        System.err.printf(Locale.ROOT, "  %s: down after %.2f s, reach %.2f m (90%% after %.2f s), shot at %.2f m %s%n",
+                motion, down, reach, reachSeconds, opt.diveOffset(), stopped ? "stopped" : "passed");
+        trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042) (vel 0 0 0))", startX + 6, startY)); // the next place() stands it up
+    }
+
     // --- report -------------------------------------------------------------------------------
 
     private static double mean(List<Double> l) {
         return l.stream().filter(d -> !Double.isNaN(d)).mapToDouble(Double::doubleValue).average().orElse(Double.NaN);
     }
 
+    private static double median(List<Double> l) {
+        double[] d = l.stream().filter(x -> !Double.isNaN(x)).mapToDouble(Double::doubleValue).sorted().toArray();
+        if (d.length == 0) return Double.NaN;
+        return d.length % 2 == 1 ? d[d.length / 2] : (d[d.length / 2 - 1] + d[d.length / 2]) / 2;
+    }
+
+    private static double min(List<Double> l) {
+        return l.stream().filter(d -> !Double.isNaN(d)).mapToDouble(Double::doubleValue).min().orElse(Double.NaN);
+    }
+
+    /** The kick and dive tables (only for the trials that ran). */
+    private void printKicksAndDives(List<Row> rows) {
+        if (rows.stream().anyMatch(r -> !r.kicks.isEmpty())) {
+            System.out.println("type | kick motion      | distance m median / min / mean | dir err deg mean / max | falls");
+            for (Row r : rows)
+                for (var e : r.kicks.entrySet()) {
+                    KickStats k = e.getValue();
+                    double maxErr = k.dirError.stream().filter(d -> !Double.isNaN(d)).mapToDouble(Double::doubleValue).max().orElse(Double.NaN);
+                    System.out.printf(Locale.ROOT, "%4d | %-16s | %6.2f / %5.2f / %5.2f         | %5.1f / %5.1f          | %d/%d%n", r.type, e.getKey(),
+                            median(k.distance), min(k.distance), mean(k.distance), mean(k.dirError), maxErr, k.falls, k.distance.size());
+                }
+        }
+        if (rows.stream().anyMatch(r -> !r.dives.isEmpty())) {
+            System.out.printf(Locale.ROOT, "type | dive       | down s median | reach m median / min | 90%% reach s median | shots at %.2f m stopped%n", opt.diveOffset());
+            for (Row r : rows)
+                for (var e : r.dives.entrySet()) {
+                    DiveStats d = e.getValue();
+                    System.out.printf(Locale.ROOT, "%4d | %-10s | %14.2f | %6.2f / %5.2f        | %18.2f | %d/%d%n", r.type, e.getKey(),
+                            median(d.downSeconds), median(d.reach), min(d.reach), median(d.reachSeconds), d.stopped, d.shots);
+                }
+        }
+    }
+
     private void print(List<Row> rows) {
+        printKicksAndDives(rows);
         System.out.println("type | walk m/s | falls | turn L deg/s | turn R deg/s | kick m (dir err deg) | strong kick m (dir err deg) | get-up ok | get-up s");
         double walk = 0, turn = 0, kick = 0, strong = 0, getup = 0, getupS = 0, falls = 0, minutes = 0;
         int tries = 0, ok = 0;

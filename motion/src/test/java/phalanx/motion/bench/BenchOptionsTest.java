@@ -20,6 +20,15 @@ class BenchOptionsTest {
         assertEquals(List.of(4, 3), o.types());
         assertTrue(o.runs("kick"));
         assertFalse(o.runs("walk"));
+        assertEquals(List.of("kick", "strong_kick"), d.kicks());
+        BenchOptions k = BenchOptions.parse("--only", "dive", "--kicks", "kick_left, strong_kick", "--ball-ahead", "0.2",
+                "--ball-side", "-0.01", "--dive-offset", "0.4", "--shot-seconds", "1.2");
+        assertTrue(k.runs("dive"));
+        assertEquals(List.of("kick_left", "strong_kick"), k.kicks());
+        assertEquals(0.2, k.ballAhead());
+        assertEquals(-0.01, k.ballSide());
+        assertEquals(0.4, k.diveOffset());
+        assertEquals(1.2, k.shotSeconds());
     }
 
     @Test
@@ -31,6 +40,9 @@ class BenchOptionsTest {
         assertTrue(msg("--speed", "2").contains("unknown flag '--speed'"));
         assertTrue(msg("--host").contains("--host needs a value"));
         assertTrue(msg("--only", "dance").contains("--only must be"));
+        assertTrue(msg("--kicks", ",").contains("--kicks needs at least one motion name"));
+        assertTrue(msg("--ball-ahead", "1").contains("--ball-ahead must be in [0, 0.5], got 1"));
+        assertTrue(msg("--shot-seconds", "x").contains("--shot-seconds needs a number, got 'x'"));
     }
 
     private static String msg(String... args) {

@@ -35,6 +35,17 @@ class MonitorSceneTest {
         assertEquals(0.0, spawn.yawDeg(), 0.01);
         assertNull(s.torso(1, "Right"));
         assertNull(s.torso(2, "Left"));
+        // Body parts: the torso's own centre is one of them, every other within a robot's size of it,
+        // the highest (the head) above it and the lowest (the feet) near the ground's level of the hanging robot.
+        List<double[]> parts = s.parts(1, "Left");
+        assertTrue(parts.size() >= 14, "parts: " + parts.size());
+        assertTrue(parts.stream().anyMatch(q -> Math.hypot(q[0] - spawn.x(), q[1] - spawn.y()) < 1e-6 && Math.abs(q[2] - spawn.z()) < 1e-6));
+        double top = parts.stream().mapToDouble(q -> q[2]).max().orElseThrow();
+        double bottom = parts.stream().mapToDouble(q -> q[2]).min().orElseThrow();
+        assertTrue(top > spawn.z() + 0.05 && top < spawn.z() + 0.3, "head at " + top);
+        assertTrue(bottom < spawn.z() - 0.25 && bottom > spawn.z() - 0.45, "feet at " + bottom);
+        assertTrue(parts.stream().allMatch(q -> Math.hypot(q[0] - spawn.x(), q[1] - spawn.y()) < 0.3));
+        assertNull(s.parts(2, "Left"));
 
         boolean sawBeam = false, sawHang = false, sawBall = false;
         for (String line : lines.subList(3, lines.size())) {
