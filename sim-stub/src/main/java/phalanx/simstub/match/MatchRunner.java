@@ -53,6 +53,7 @@ public final class MatchRunner {
         volatile Side side;
         volatile Double processesGoneAt;
         volatile String startError;
+        volatile boolean startFailed;     // could not start, or its command failed: never allowed to be empty
 
         Team(TeamCommand command, Path root) {
             this.command = command;
@@ -117,7 +118,7 @@ public final class MatchRunner {
             }
         }
         for (Team t : teams) {
-            if (t.side == null && !(cfg.allowEmpty() && t.startError == null)) return "team " + t.command.label() + " has no players on the field"
+            if (t.side == null && !(cfg.allowEmpty() && !t.startFailed)) return "team " + t.command.label() + " has no players on the field"
                     + (t.startError != null ? " (" + t.startError + ")" : "");
         }
         say("%s left (%d players), %s right (%d players)", label(Side.LEFT), follower.present(Side.LEFT).size(),
@@ -189,6 +190,7 @@ public final class MatchRunner {
             say("started %s (session %d): %s", t.command.label(), t.process.pid(), cmd);
         } catch (IOException e) {
             t.startError = "cannot start: " + e.getMessage();
+            t.startFailed = true;
             say("%s: %s", t.command.label(), t.startError);
         }
     }
@@ -226,6 +228,7 @@ public final class MatchRunner {
         }
         Integer exit = t.process.exitCode();
         if (t.side == null) {
+            t.startFailed = exit != null && exit != 0;
             t.startError = exit != null && exit != 0 ? "start command exited with " + exit + " and no player connected"
                     : "no player connected in " + (int) cfg.connectTimeout() + " s";
         }
