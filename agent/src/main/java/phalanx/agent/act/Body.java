@@ -58,6 +58,9 @@ public final class Body {
         return keyframes.step(p.time(), p.joints(), Locomotion.request(wanted == null ? move : Move.STAND));
     }
 
+    /** Share of the walk's backward speed limit for {@link Move.StepBack}: a few centimetres, not a retreat. */
+    private static final double STEP_BACK_SHARE = 0.5;
+
     /** The walk velocity for a locomotion move, ZERO for standing, null for a keyframe move. */
     private WalkVelocity velocity(Move move) {
         if (move instanceof Move.Stand) return WalkVelocity.ZERO;
@@ -68,6 +71,7 @@ public final class Body {
         }
         if (move instanceof Move.Turn t) return new WalkVelocity(0, 0, (t.left() ? 1 : -1) * t.gain() * walkConfig.maxTurnDeg());
         if (move instanceof Move.SideStep s) return new WalkVelocity(0, (s.left() ? 1 : -1) * walkConfig.maxLeft(), 0);
+        if (move instanceof Move.StepBack) return new WalkVelocity(-STEP_BACK_SHARE * walkConfig.maxBackward(), 0, 0);
         return null;
     }
 

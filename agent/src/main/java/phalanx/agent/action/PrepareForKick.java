@@ -8,9 +8,11 @@ import phalanx.agent.decide.Situation;
 import phalanx.localization.field.Vector2;
 
 /**
- * 4.6.1 Prepare For Kick: side steps and slow forward steps only, until the ball lies in front of
- * the right foot (the kick's spot) within the tolerances. Sideways first (a forward step with the
- * ball off to the side would push it away), then forward.
+ * 4.6.1 Prepare For Kick: side steps and slow forward steps, until the ball lies in front of the
+ * right foot (the kick's spot) within the tolerances. Sideways first (a forward step with the ball
+ * off to the side would push it away), then forward. Ours, beyond the thesis: a ball nearer than
+ * the spot's band (at the feet) is not kicked off the shin; the robot steps back first (a side step
+ * there would push the ball with the foot).
  */
 public final class PrepareForKick implements Action {
     private final AgentConfig config;
@@ -26,6 +28,7 @@ public final class PrepareForKick implements Action {
         Vector2 ball = Facts.ball(s, config);
         if (ball == null || ready(ball)) return Decision.of(Move.STAND, track.head(s));
         AgentConfig.Kick k = config.kick();
+        if (ball.x() < k.spotX() - k.toleranceX()) return Decision.of(new Move.StepBack(), track.head(s));
         double ey = ball.y() - k.spotY();
         if (Math.abs(ey) > k.toleranceY()) return Decision.of(new Move.SideStep(ey > 0), track.head(s));
         return Decision.of(new Move.Walk(0, true), track.head(s));
@@ -39,6 +42,6 @@ public final class PrepareForKick implements Action {
 
     private boolean ready(Vector2 ball) {
         AgentConfig.Kick k = config.kick();
-        return ball.x() - k.spotX() <= k.toleranceX() && Math.abs(ball.y() - k.spotY()) <= k.toleranceY();
+        return Math.abs(ball.x() - k.spotX()) <= k.toleranceX() && Math.abs(ball.y() - k.spotY()) <= k.toleranceY();
     }
 }

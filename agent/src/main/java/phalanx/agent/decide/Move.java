@@ -29,6 +29,9 @@ public sealed interface Move {
     /** One side step. */
     record SideStep(boolean left) implements Move {}
 
+    /** Small steps backward (Prepare For Kick, when the ball lies too close to the feet to kick). */
+    record StepBack() implements Move {}
+
     /** Kick with the right foot (the ball in front of it: Prepare for Kick); {@code strong} for the strong kick. */
     record Kick(boolean strong) implements Move {}
 

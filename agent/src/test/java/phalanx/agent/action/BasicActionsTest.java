@@ -126,6 +126,23 @@ class BasicActionsTest {
         assertEquals(Move.STAND, p.decide(ready).move());
         assertFalse(p.done(World.at(0, 0, 0).ballRel(0.21, -0.055).situation()), "4 cm too far");
         assertFalse(p.done(World.at(0, 0, 0).ballRel(0.17, -0.02).situation()), "3.5 cm too far left");
+        assertTrue(p.done(World.at(0, 0, 0).ballRel(0.145, -0.055).situation()), "2.5 cm short: inside the band");
+    }
+
+    @Test
+    void prepareForKickStepsBackFromABallAtTheFeet() {
+        PrepareForKick p = new PrepareForKick(C);
+        var atFeet = World.at(0, 0, 0).ballRel(0.10, -0.055).situation();   // 7 cm short of the 0.17 m spot
+        assertFalse(p.done(atFeet), "a ball at the feet is not ready: it would be kicked off the shin");
+        assertEquals(new Move.StepBack(), p.decide(atFeet).move());
+        // Too close and off to the side: back first (a side step there would push the ball).
+        assertEquals(new Move.StepBack(), p.decide(World.at(0, 0, 0).ballRel(0.12, 0.05).situation()).move());
+        // Just inside the band's near edge (0.17 - 0.03): no more stepping back.
+        var nearEdge = World.at(0, 0, 0).ballRel(0.142, -0.055).situation();
+        assertTrue(p.done(nearEdge));
+        assertEquals(Move.STAND, p.decide(nearEdge).move());
+        // Back in the band but to the side: side step as before.
+        assertEquals(new Move.SideStep(true), p.decide(World.at(0, 0, 0).ballRel(0.16, 0.0).situation()).move());
     }
 
     @Test

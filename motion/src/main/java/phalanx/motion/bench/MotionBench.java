@@ -193,8 +193,10 @@ public final class MotionBench {
         if (opt.trace() && cycles % 5 == 0) {
             MonitorScene.Pose p = torso();
             double[] b = ball();
-            if (p != null) System.err.printf(Locale.ROOT, "  t=%.2f %s/%s pos=(%.3f %.3f %.3f) yaw=%.1f up=%.2f fwdZ=%.2f ball=(%.2f %.2f)%n", last.time(),
-                    controller.playing(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(), b == null ? 0 : b[0], b == null ? 0 : b[1]);
+            if (p != null) System.err.printf(Locale.ROOT, "  t=%.2f %s/%s pos=(%.3f %.3f %.3f) yaw=%.1f up=%.2f fwdZ=%.2f ball=(%.2f %.2f) legs L %.0f/%.0f/%.0f R %.0f/%.0f/%.0f%n", last.time(),
+                    controller.playing(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(), b == null ? 0 : b[0], b == null ? 0 : b[1],
+                    last.joints().degrees(Joint.LLJ3), last.joints().degrees(Joint.LLJ4), last.joints().degrees(Joint.LLJ5),
+                    last.joints().degrees(Joint.RLJ3), last.joints().degrees(Joint.RLJ4), last.joints().degrees(Joint.RLJ5));
         }
     }
 
