@@ -26,6 +26,9 @@ package phalanx.localization;
  *                             (thesis 4.6 Stand Up confirms with the foot sensors); standing gives about 45 N
  * @param fallConfirmCycles    cycles the tilt and the missing support must last before a fall is confirmed
  * @param accSmoothing         share of the accelerometer mixed into the gyro-integrated tilt per cycle; not in the thesis
+ * @param fallTiltCycles       cycles in a row the accelerometer must show the tilt before it says "falling": in the
+ *                             real server the omni walk's foot impacts tilt single readings past 90° (81 of 500
+ *                             walking cycles over 50°, never two in a row; localization/README.md); not in the thesis
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
                                  double ballAgreementMetres, PairWeighting pairWeighting, double fieldMarginMetres,
@@ -33,7 +36,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  int trackSetSize, int trackDelay,
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
-                                 int fallConfirmCycles, double accSmoothing) {
+                                 int fallConfirmCycles, double accSmoothing, int fallTiltCycles) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -51,7 +54,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             0.01, 0.5, 3,
             5, 5,
             1.0, 3,
-            50, 150, 20, 5, 0.05);
+            50, 150, 20, 5, 0.05, 3);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -61,20 +64,20 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         if (trackSetSize < 1 || trackDelay < 1) throw new IllegalArgumentException("track set size and delay must be at least 1");
         if (!(fusionClusterMetres > 0)) throw new IllegalArgumentException("fusionClusterMetres must be positive");
         if (!(accSmoothing > 0 && accSmoothing <= 1)) throw new IllegalArgumentException("accSmoothing must be in (0, 1]");
-        if (ekfResetFrames < 1 || fallConfirmCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
+        if (ekfResetFrames < 1 || fallConfirmCycles < 1 || fallTiltCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
     }
 
     public LocalizationConfig withFilter(Filter f) {
         return new LocalizationConfig(f, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, accSmoothing);
+                fallSupportNewtons, fallConfirmCycles, accSmoothing, fallTiltCycles);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, accSmoothing);
+                fallSupportNewtons, fallConfirmCycles, accSmoothing, fallTiltCycles);
     }
 }

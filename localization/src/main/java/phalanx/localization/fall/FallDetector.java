@@ -15,15 +15,16 @@ import java.util.List;
  */
 public final class FallDetector {
     private final double cosTilt, gyroLimit, support;
-    private final int confirmCycles;
+    private final int confirmCycles, tiltCycles;
     private FallState state = FallState.STANDING;
-    private int downCycles;
+    private int downCycles, tiltedCycles;
 
     public FallDetector(LocalizationConfig c) {
         cosTilt = Math.cos(Math.toRadians(c.fallTiltDeg()));
         gyroLimit = c.fallGyroDegPerSec();
         support = c.fallSupportNewtons();
         confirmCycles = c.fallConfirmCycles();
+        tiltCycles = c.fallTiltCycles();
     }
 
     /**
@@ -36,6 +37,7 @@ public final class FallDetector {
         double n = acc.norm();
         if (n < 1.0) return state;                       // no gravity reading yet (first messages)
         boolean tilted = acc.z() / n < cosTilt;
+        tiltedCycles = tilted ? tiltedCycles + 1 : 0;
         boolean spinning = gyro != null && gyro.isFinite()
                 && Math.max(Math.abs(gyro.x()), Math.abs(gyro.y())) > gyroLimit;
         double carried = 0;
@@ -53,7 +55,8 @@ public final class FallDetector {
         } else {
             downCycles = 0;
         }
-        state = tilted || spinning ? FallState.FALLING : FallState.STANDING;
+        // A single tilted reading is a foot impact of the walk, not a fall (LocalizationConfig.fallTiltCycles).
+        state = tiltedCycles >= tiltCycles || spinning ? FallState.FALLING : FallState.STANDING;
         return state;
     }
 

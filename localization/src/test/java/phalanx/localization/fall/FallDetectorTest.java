@@ -23,8 +23,10 @@ class FallDetectorTest {
     void lyingFaceDownWithoutFootSupportIsAFrontFallAfterTheConfirmation() {
         FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
         Vector3 prone = new Vector3(0, -9.81, 0.1);
+        int tilt = LocalizationConfig.DEFAULT.fallTiltCycles();
         for (int i = 1; i < LocalizationConfig.DEFAULT.fallConfirmCycles(); i++)
-            assertEquals(FallState.FALLING, d.update(prone, Vector3.ZERO, List.of()), "cycle " + i + ": not confirmed yet");
+            assertEquals(i < tilt ? FallState.STANDING : FallState.FALLING, d.update(prone, Vector3.ZERO, List.of()),
+                    "cycle " + i + ": not confirmed yet");
         assertEquals(FallState.FALLEN_FRONT, d.update(prone, Vector3.ZERO, List.of()));
     }
 
@@ -32,8 +34,35 @@ class FallDetectorTest {
     void tiltWhileTheFeetCarryTheRobotIsNoFall() {
         FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
         Vector3 leaning = new Vector3(0, 8, 5.7);         // 55° tilt, as in a collision
-        for (int i = 0; i < 20; i++) assertEquals(FallState.FALLING, d.update(leaning, Vector3.ZERO, Scenes.standingFeet()));
+        for (int i = 1; i <= 20; i++) {
+            FallState expected = i < LocalizationConfig.DEFAULT.fallTiltCycles() ? FallState.STANDING : FallState.FALLING;
+            assertEquals(expected, d.update(leaning, Vector3.ZERO, Scenes.standingFeet()), "cycle " + i);
+        }
         assertEquals(FallState.STANDING, d.update(Scenes.UPRIGHT, Vector3.ZERO, Scenes.standingFeet()));
+    }
+
+    /**
+     * Our omni walk in the real server (type 0, 0.88 m/s, 10 s without a fall; recorded with
+     * WALK_TRACE=1 scripts/walk-bench, file in test resources): 81 single readings tilt past 50°,
+     * foot impacts. None of them may read as falling, or every behaviour stops walking at once.
+     */
+    @Test
+    void theWalksFootImpactsAreNoFall() throws Exception {
+        List<String> lines = java.nio.file.Files.readAllLines(Path.of(getClass().getResource("walk-imu-type0.txt").toURI()));
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        double cos = Math.cos(Math.toRadians(LocalizationConfig.DEFAULT.fallTiltDeg()));
+        int spikes = 0, n = 0;
+        for (String line : lines) {
+            if (line.startsWith("#")) continue;
+            double[] v = java.util.Arrays.stream(line.trim().split(" ")).mapToDouble(Double::parseDouble).toArray();
+            Vector3 acc = new Vector3(v[3], v[4], v[5]);
+            if (acc.z() / acc.norm() < cos) spikes++;
+            List<FootForce> feet = List.of(new FootForce(FootForce.Foot.LEFT, Vector3.ZERO, new Vector3(0, 0, v[6])),
+                    new FootForce(FootForce.Foot.RIGHT, Vector3.ZERO, new Vector3(0, 0, v[7])));
+            assertEquals(FallState.STANDING, d.update(acc, new Vector3(v[0], v[1], v[2]), feet), "walk cycle " + ++n);
+        }
+        assertEquals(500, n);
+        assertTrue(spikes > 50, "the recording has the impact spikes: " + spikes);
     }
 
     @Test

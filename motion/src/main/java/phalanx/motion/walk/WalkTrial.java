@@ -199,8 +199,8 @@ public final class WalkTrial {
             while (d < -180) d += 360;
             turned += d;
             prevYaw = p.yawDeg();
-            if (TRACE) System.err.printf(Locale.ROOT, "trace est pitch %.1f roll %.1f mon %d cyc %d %.2f pos %.3f %.3f z %.3f yaw %.1f pitch(fwdZ) %+.3f roll(rightZ) %+.3f gyro %s%n",
-                    walk.pitchForward(), walk.rollRight(), monitorMessages(), cycles, clock() - t0, p.x(), p.y(), p.z(), p.yawDeg(), p.forwardZ(), p.r()[6], last.gyro());
+            if (TRACE) System.err.printf(Locale.ROOT, "trace est pitch %.1f roll %.1f mon %d cyc %d %.2f pos %.3f %.3f z %.3f yaw %.1f pitch(fwdZ) %+.3f roll(rightZ) %+.3f gyro %s acc %s feet %s%n",
+                    walk.pitchForward(), walk.rollRight(), monitorMessages(), cycles, clock() - t0, p.x(), p.y(), p.z(), p.yawDeg(), p.forwardZ(), p.r()[6], last.gyro(), last.acc(), last.footForces());
             if (fallen()) {
                 fell = true;
                 fellAfter = clock() - t0;
