@@ -78,8 +78,10 @@ public final class PlayerRuntime {
             gameTime = p.gameState().gameTime();
             parts.playMode(playMode);
         }
+        Situation.MotionStatus motion = parts.motionStatus();
+        parts.beliefs().bodyBusy(!motion.idle());
         WorldBelief belief = parts.beliefs().update(p);                                                  // model
-        Situation s = new Situation(p.time(), cycles, playMode, gameTime, belief, parts.field(), p.joints(), parts.motionStatus());
+        Situation s = new Situation(p.time(), cycles, playMode, gameTime, belief, parts.field(), p.joints(), motion);
         int unum = belief.unum() > 0 ? belief.unum() : options.unum();
         PlayerParts.Role role = parts.role(unum);
         String say = role == null ? null : role.channel().step(p.time(), playMode, p.hears(), belief);

@@ -53,6 +53,7 @@ public final class BeliefStore {
     private final LocalizationFilter ballFilter;
     private final MovingObjectTracker ballTracker;
     private final FallDetector fallDetector;
+    private boolean bodyBusy;
     private final BeliefStats stats = new BeliefStats();
     private final List<LandmarkSighting> sightings = new ArrayList<>(Landmark.COUNT);
     private final PlayerBelief[] mates = new PlayerBelief[MAX_ID + 1], others = new PlayerBelief[MAX_ID + 1];
@@ -135,6 +136,13 @@ public final class BeliefStore {
 
     public WorldBelief belief() { return belief; }
 
+    /**
+     * Whether a keyframe motion (get-up, kick, dive) moves the body this cycle. While it does, vision
+     * places nothing: the tilt estimate lags such motions, and in games fixes taken while a keeper got up
+     * put it metres away, once at the mirrored x (localization/README.md).
+     */
+    public void bodyBusy(boolean busy) { this.bodyBusy = busy; }
+
     public BeliefStats stats() { return stats; }
 
     /** The accelerometer reads about 1 g: the robot is not being thrown about. */
@@ -166,7 +174,7 @@ public final class BeliefStore {
 
         // Lying or falling, or the accelerometer reading more than gravity: the tilt, hence the
         // camera pose, is unknown, and a fix would be wrong by metres (S3). Keep the old belief.
-        boolean steady = fall == FallState.STANDING && isSteady(p.acc());
+        boolean steady = fall == FallState.STANDING && !bodyBusy && isSteady(p.acc());
         if (!steady) {
             stats.fallenFrames++;
         } else if (side != null) {

@@ -141,4 +141,20 @@ class BeliefStoreTest {
         assertEquals(1.5, b.ballRelative().x(), 0.01, "walked half a metre towards it");
         assertEquals(0.02, b.ballAge(), 1e-9);
     }
+
+    @Test
+    void noFixWhileAKeyframeMotionMovesTheBody() {
+        BeliefStore s = store(LocalizationConfig.Filter.EKF);
+        s.update(Scenes.gameState(0, 3, Side.LEFT));
+        Pose2 truth = new Pose2(-5, 2, 7);
+        for (int i = 1; i <= 10; i++) s.update(frame(i * 0.06, truth, Side.LEFT, RIGHT_END));
+        s.bodyBusy(true);                                     // e.g. a get-up: views from elsewhere are ignored
+        WorldBelief b = null;
+        for (int i = 11; i <= 20; i++) b = s.update(frame(i * 0.06, new Pose2(8, -3, 100), Side.LEFT, RIGHT_END));
+        assertEquals(-5, b.self().x(), 0.005);
+        assertEquals(2, b.self().y(), 0.005);
+        s.bodyBusy(false);
+        for (int i = 21; i <= 40; i++) b = s.update(frame(i * 0.06, new Pose2(8, -3, 100), Side.LEFT, RIGHT_END));
+        assertEquals(8, b.self().x(), 0.05, "vision counts again once the motion is over");
+    }
 }
