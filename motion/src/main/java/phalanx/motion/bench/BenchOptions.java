@@ -9,17 +9,19 @@ import java.util.List;
  *
  * @param types robot types to measure (the server needs at least three types in a team of eleven,
  *              DESIGN.md, so the team fields 0, 1 and 2 at least)
+ * @param getupWalkSeconds after a get-up that stood, walk forward at full speed this long (0: no walk)
  */
 public record BenchOptions(String host, int port, int monitorPort, List<Integer> types, int trials,
-                           double walkSeconds, double turnSeconds, Path motions, String only, boolean trace) {
+                           double walkSeconds, double turnSeconds, Path motions, String only, boolean trace,
+                           double getupWalkSeconds) {
 
     public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
-            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup] [--trace]";
+            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup] [--getup-walk 2] [--trace]";
 
     public static BenchOptions parse(String... args) {
         String host = "127.0.0.1";
         int port = 3100, monitorPort = 3200, trials = 3;
-        double walk = 10, turn = 5;
+        double walk = 10, turn = 5, getupWalk = 2;
         List<Integer> types = List.of(0, 1, 2);
         Path motions = Path.of("motions");
         String only = null;
@@ -38,6 +40,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 case "--walk-seconds" -> walk = number(flag, v, 1, 600, false);
                 case "--turn-seconds" -> turn = number(flag, v, 1, 600, false);
                 case "--motions" -> motions = Path.of(v);
+                case "--getup-walk" -> getupWalk = number(flag, v, 0, 60, false);
                 case "--only" -> {
                     if (!List.of("walk", "turn", "kick", "getup").contains(v)) throw new IllegalArgumentException("--only must be walk, turn, kick or getup, got '" + v + "'");
                     only = v;
@@ -54,7 +57,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
             }
         }
-        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace);
+        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace, getupWalk);
     }
 
     public boolean runs(String what) { return only == null || only.equals(what); }
