@@ -9,14 +9,16 @@ import java.util.List;
  *
  * @param types robot types to measure (the server needs at least three types in a team of eleven,
  *              DESIGN.md, so the team fields 0, 1 and 2 at least)
+ * @param lying           get-up trials to run in each trial round: front, back, side (left/right in turn),
+ *                        oblique (the four diagonals in turn)
  * @param getupWalkSeconds after a get-up that stood, walk forward at full speed this long (0: no walk)
  */
 public record BenchOptions(String host, int port, int monitorPort, List<Integer> types, int trials,
                            double walkSeconds, double turnSeconds, Path motions, String only, boolean trace,
-                           double getupWalkSeconds) {
+                           double getupWalkSeconds, List<String> lying) {
 
     public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
-            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup] [--getup-walk 2] [--trace]";
+            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup] [--getup-walk 2] [--lying front,back,side,oblique] [--trace]";
 
     public static BenchOptions parse(String... args) {
         String host = "127.0.0.1";
@@ -26,6 +28,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
         Path motions = Path.of("motions");
         String only = null;
         boolean trace = false;
+        List<String> lying = List.of("front", "back", "side", "oblique");
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(USAGE);
@@ -41,6 +44,15 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 case "--turn-seconds" -> turn = number(flag, v, 1, 600, false);
                 case "--motions" -> motions = Path.of(v);
                 case "--getup-walk" -> getupWalk = number(flag, v, 0, 60, false);
+                case "--lying" -> {
+                    List<String> l = new ArrayList<>();
+                    for (String s : v.split(",")) {
+                        String w = s.strip();
+                        if (!List.of("front", "back", "side", "oblique").contains(w)) throw new IllegalArgumentException("--lying takes front, back, side, oblique, got '" + w + "'");
+                        if (!l.contains(w)) l.add(w);
+                    }
+                    lying = List.copyOf(l);
+                }
                 case "--only" -> {
                     if (!List.of("walk", "turn", "kick", "getup").contains(v)) throw new IllegalArgumentException("--only must be walk, turn, kick or getup, got '" + v + "'");
                     only = v;
@@ -57,7 +69,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
             }
         }
-        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace, getupWalk);
+        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace, getupWalk, lying);
     }
 
     public boolean runs(String what) { return only == null || only.equals(what); }

@@ -160,7 +160,7 @@ public final class MotionBench {
                 row.strongDir.add(s[1]);
             }
             if (opt.runs("getup")) {
-                for (int k = 0; k < 4; k++) getUp(row, lying(t, k));
+                for (int k = 0; k < 4; k++) if (opt.lying().contains(List.of("front", "back", "side", "oblique").get(k))) getUp(row, lying(t, k));
             }
             System.err.printf(Locale.ROOT, "type %d trial %d done (%d cycles)%n", type, t + 1, cycles);
         }
@@ -406,8 +406,10 @@ public final class MotionBench {
         double upAt = Double.NaN;
         long done = controller.completions();
         MotionRequest r = MotionRequest.of(motion).interrupting();
+        double best = 0;
         for (int i = 0; i < 400 && controller.completions() == done; i++) {
             cycle(r);
+            best = Math.max(best, torso().z() * Math.max(0, torso().upZ()) / standingZ);
             if (Double.isNaN(upAt) && torso().upZ() > 0.9 && torso().z() > 0.75 * standingZ) upAt = simTime() - t0;
         }
         double motionEnd = simTime() - t0;
@@ -437,8 +439,8 @@ public final class MotionBench {
             }
         }
         MonitorScene.Pose e = torso();
-        System.err.printf(Locale.ROOT, "  getup %-11s %-14s %s  up at %.2f s, motion %.2f s, end z %.3f up %.2f%s%n", lying, motion,
-                ok ? "ok    " : "FAILED", upAt, motionEnd, e.z(), e.upZ(), walkFell ? ", fell in the walk after" : "");
+        System.err.printf(Locale.ROOT, "  getup %-11s %-14s %s  up at %.2f s, motion %.2f s, best %.2f, end z %.3f up %.2f%s%n", lying, motion,
+                ok ? "ok    " : "FAILED", upAt, motionEnd, best, e.z(), e.upZ(), walkFell ? ", fell in the walk after" : "");
         if (!ok || walkFell) getUpQuietly();
     }
 

@@ -31,6 +31,16 @@ class BenchOptionsTest {
         assertTrue(msg("--speed", "2").contains("unknown flag '--speed'"));
         assertTrue(msg("--host").contains("--host needs a value"));
         assertTrue(msg("--only", "dance").contains("--only must be"));
+        assertTrue(msg("--lying", "front,upside-down").contains("--lying takes front, back, side, oblique, got 'upside-down'"));
+        assertTrue(msg("--getup-walk", "-1").contains("--getup-walk must be in [0, 60]"));
+    }
+
+    @Test
+    void getupFlags() {
+        BenchOptions o = BenchOptions.parse("--lying", "back, side", "--getup-walk", "0");
+        assertEquals(java.util.List.of("back", "side"), o.lying());
+        assertEquals(0, o.getupWalkSeconds());
+        assertEquals(java.util.List.of("front", "back", "side", "oblique"), BenchOptions.parse().lying());
     }
 
     private static String msg(String... args) {
