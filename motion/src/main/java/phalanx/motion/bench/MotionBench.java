@@ -183,7 +183,9 @@ public final class MotionBench {
     private void cycle(MotionRequest request) throws IOException {
         receive();
         cycles++;
-        JointVelocities v = controller.step(last.time(), last.joints(), request);
+        // the bench's own cycle clock, not the server's float time: in a server that ran freely it advances
+        // in steps of 1/64 s and would stretch or shorten every phase by up to 20 %
+        JointVelocities v = controller.step(simTime(), last.joints(), request);
         v = v.with(Joint.HJ1, 0.2 * Math.sin(cycles * 0.2));
         out.reset();
         v.appendTo(out).syn();
