@@ -25,6 +25,10 @@ package phalanx.localization;
  * @param fallSupportNewtons   total sole-normal foot force under which the feet "do not carry" the robot
  *                             (thesis 4.6 Stand Up confirms with the foot sensors); standing gives about 45 N
  * @param fallConfirmCycles    cycles the tilt and the missing support must last before a fall is confirmed
+ * @param fallBackMinDeg       a confirmed fall is FALLEN_BACK only when the torso's forward axis points this far above
+ *                             the horizontal; lying on a side (or nearly) counts as FALLEN_FRONT, because the front
+ *                             get-up rolls a side-lying robot onto its front and the back one does not get it up
+ *                             (motion/README.md, measured with scripts/motion-bench); not in the thesis
  * @param accSmoothing         share of the accelerometer mixed into the gyro-integrated tilt per cycle; not in the thesis
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
@@ -33,7 +37,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  int trackSetSize, int trackDelay,
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
-                                 int fallConfirmCycles, double accSmoothing) {
+                                 int fallConfirmCycles, double fallBackMinDeg, double accSmoothing) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -51,7 +55,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             0.01, 0.5, 3,
             5, 5,
             1.0, 3,
-            50, 150, 20, 5, 0.05);
+            50, 150, 20, 5, 30, 0.05);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -61,6 +65,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         if (trackSetSize < 1 || trackDelay < 1) throw new IllegalArgumentException("track set size and delay must be at least 1");
         if (!(fusionClusterMetres > 0)) throw new IllegalArgumentException("fusionClusterMetres must be positive");
         if (!(accSmoothing > 0 && accSmoothing <= 1)) throw new IllegalArgumentException("accSmoothing must be in (0, 1]");
+        if (!(fallBackMinDeg >= 0 && fallBackMinDeg < 90)) throw new IllegalArgumentException("fallBackMinDeg must be in [0, 90), got " + fallBackMinDeg);
         if (ekfResetFrames < 1 || fallConfirmCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
     }
 
@@ -68,13 +73,13 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         return new LocalizationConfig(f, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, accSmoothing);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, accSmoothing);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing);
     }
 }

@@ -14,7 +14,7 @@ import java.util.List;
  * One call per cycle; no allocation.
  */
 public final class FallDetector {
-    private final double cosTilt, gyroLimit, support;
+    private final double cosTilt, gyroLimit, support, sinBack;
     private final int confirmCycles;
     private FallState state = FallState.STANDING;
     private int downCycles;
@@ -24,6 +24,7 @@ public final class FallDetector {
         gyroLimit = c.fallGyroDegPerSec();
         support = c.fallSupportNewtons();
         confirmCycles = c.fallConfirmCycles();
+        sinBack = Math.sin(Math.toRadians(c.fallBackMinDeg()));
     }
 
     /**
@@ -47,7 +48,9 @@ public final class FallDetector {
         }
         if (tilted && carried < support) {
             if (++downCycles >= confirmCycles) {
-                state = acc.y() >= 0 ? FallState.FALLEN_BACK : FallState.FALLEN_FRONT;
+                // the accelerometer's y is the forward axis' share of "up": face up only if clearly positive;
+                // a side-lying robot (y near 0) gets the front get-up, which rolls it onto its front
+                state = acc.y() > sinBack * n ? FallState.FALLEN_BACK : FallState.FALLEN_FRONT;
                 return state;
             }
         } else {

@@ -327,10 +327,16 @@ public final class MotionBench {
         return new double[] {dist, err};
     }
 
+    /**
+     * The agent's choice (localization FallDetector with LocalizationConfig.fallBackMinDeg = 30): the back
+     * get-up only when the chest faces more than 30 degrees up; on a side, the front one.
+     */
+    static boolean lyingOnBack(MonitorScene.Pose p) { return p.forwardZ() > Math.sin(Math.toRadians(30)); }
+
     private void getUpQuietly() throws IOException {
         for (int tries = 0; tries < 3 && fallen(); tries++) {
             MonitorScene.Pose p = torso();
-            String m = p.forwardZ() > 0 ? "stand_up_back" : "stand_up_front";
+            String m = lyingOnBack(p) ? "stand_up_back" : "stand_up_front";
             long done = controller.completions();
             for (int i = 0; i < 300 && controller.completions() == done; i++) cycle(MotionRequest.of(m).interrupting());
             hold(50);
@@ -400,7 +406,7 @@ public final class MotionBench {
             return;
         }
         MonitorScene.Pose p = torso();
-        boolean front = p.forwardZ() <= 0;
+        boolean front = !lyingOnBack(p);
         Row.Getups g = front ? row.front : row.back;
         String motion = front ? "stand_up_front" : "stand_up_back";
         g.tries++;
