@@ -169,8 +169,13 @@ public final class MotionBench {
         return row;
     }
 
+    private long received;
+
     private void receive() throws IOException {
         agent.reader().next();
+        // partial monitor updates stop matching the scene when the referee or a trainer command changes
+        // it; a full scene every half second keeps the ground truth from going stale (as walk-bench does)
+        if (++received % 25 == 0) trainer("(reqfullstate)");
         try {
             last = parser.parse(agent.reader().buffer(), 0, agent.reader().length());
         } catch (MalformedMessageException e) {
