@@ -138,13 +138,7 @@ public final class MotionBench {
         Row row = new Row();
         row.type = type;
         standingZ = LegGeometry.forType(type).standingTorsoHeight();
-        agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
-        agent.send(EffectorMessage.scene(type));
-        receive();
-        agent.send(EffectorMessage.init(1, TEAM)); // carries (syn): the next message is answered by cycle()
-        controller = new MotionController(library, MotionConfig.DEFAULT);
-        hold(25);
-        trainer("(playMode PlayOn)");
+        connect(type);
         for (int t = 0; t < opt.trials(); t++) {
             if (opt.runs("walk")) walk(row);
             if (opt.runs("turn")) {
@@ -170,6 +164,19 @@ public final class MotionBench {
     }
 
     private long received;
+
+    private int connectedType;
+
+    private void connect(int type) throws IOException {
+        connectedType = type;
+        agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
+        agent.send(EffectorMessage.scene(type));
+        receive();
+        agent.send(EffectorMessage.init(1, TEAM)); // carries (syn): the next message is answered by cycle()
+        controller = new MotionController(library, MotionConfig.DEFAULT);
+        hold(25);
+        trainer("(playMode PlayOn)");
+    }
 
     private void receive() throws IOException {
         agent.reader().next();
@@ -380,6 +387,16 @@ public final class MotionBench {
      */
     private void getUp(Row row, Lying lying) throws IOException {
         place(4, 4);
+        if (fallen()) {
+            // seen twice in long runs: the robot kept lying on its back after every trainer move (its
+            // body stuck in the server); a new player is the only way out, and the trial starts afresh
+            System.err.printf(Locale.ROOT, "  the robot does not stand after a trainer move: reconnecting it%n");
+            agent.close();
+            hold0(50);
+            connect(connectedType);
+            place(4, 4);
+            if (fallen()) throw new IOException("the robot does not stand after a trainer move, even as a new player");
+        }
         double[] pose = new double[Joint.COUNT];          // random limbs, held during the fall
         java.util.Arrays.fill(pose, Double.NaN);
         double sh = -120 + 160 * random.nextDouble(), hip = -10 + 50 * random.nextDouble(), knee = -70 * random.nextDouble();
