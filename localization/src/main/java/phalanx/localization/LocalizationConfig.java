@@ -26,9 +26,10 @@ package phalanx.localization;
  *                             (thesis 4.6 Stand Up confirms with the foot sensors); standing gives about 45 N
  * @param fallConfirmCycles    cycles the tilt and the missing support must last before a fall is confirmed
  * @param fallBackMinDeg       a confirmed fall is FALLEN_BACK only when the torso's forward axis points this far above
- *                             the horizontal; lying on a side (or nearly) counts as FALLEN_FRONT, because the front
- *                             get-up rolls a side-lying robot onto its front and the back one does not get it up
- *                             (motion/README.md, measured with scripts/motion-bench); not in the thesis
+ *                             the horizontal; lying on a side (or nearly) counts as FALLEN_FRONT. With the chest
+ *                             near horizontal the sign of the forward axis is noise and would flip the choice
+ *                             between retries; both get-ups stood about 2 in 3 side-lying trials
+ *                             (motion/README.md, scripts/motion-bench); not in the thesis
  * @param accSmoothing         share of the accelerometer mixed into the gyro-integrated tilt per cycle; not in the thesis
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
