@@ -25,6 +25,11 @@ package phalanx.localization;
  * @param fallSupportNewtons   total sole-normal foot force under which the feet "do not carry" the robot
  *                             (thesis 4.6 Stand Up confirms with the foot sensors); standing gives about 45 N
  * @param fallConfirmCycles    cycles the tilt and the missing support must last before a fall is confirmed
+ * @param fallBackMinDeg       a confirmed fall is FALLEN_BACK only when the torso's forward axis points this far above
+ *                             the horizontal; lying on a side (or nearly) counts as FALLEN_FRONT. With the chest
+ *                             near horizontal the sign of the forward axis is noise and would flip the choice
+ *                             between retries; both get-ups stood about 2 in 3 side-lying trials
+ *                             (motion/README.md, scripts/motion-bench); not in the thesis
  * @param accSmoothing         share of the accelerometer mixed into the gyro-integrated tilt per cycle; not in the thesis
  * @param fallTiltCycles       cycles in a row the accelerometer must show the tilt before it says "falling": in the
  *                             real server the omni walk's foot impacts tilt single readings past 90° (81 of 500
@@ -36,7 +41,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  int trackSetSize, int trackDelay,
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
-                                 int fallConfirmCycles, double accSmoothing, int fallTiltCycles) {
+                                 int fallConfirmCycles, double fallBackMinDeg, double accSmoothing, int fallTiltCycles) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -54,7 +59,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             0.01, 0.5, 3,
             5, 5,
             1.0, 3,
-            50, 150, 20, 5, 0.05, 3);
+            50, 150, 20, 5, 30, 0.05, 3);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -64,6 +69,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         if (trackSetSize < 1 || trackDelay < 1) throw new IllegalArgumentException("track set size and delay must be at least 1");
         if (!(fusionClusterMetres > 0)) throw new IllegalArgumentException("fusionClusterMetres must be positive");
         if (!(accSmoothing > 0 && accSmoothing <= 1)) throw new IllegalArgumentException("accSmoothing must be in (0, 1]");
+        if (!(fallBackMinDeg >= 0 && fallBackMinDeg < 90)) throw new IllegalArgumentException("fallBackMinDeg must be in [0, 90), got " + fallBackMinDeg);
         if (ekfResetFrames < 1 || fallConfirmCycles < 1 || fallTiltCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
     }
 
@@ -71,13 +77,13 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         return new LocalizationConfig(f, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, accSmoothing, fallTiltCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, accSmoothing, fallTiltCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles);
     }
 }

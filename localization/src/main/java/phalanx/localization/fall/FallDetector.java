@@ -14,7 +14,7 @@ import java.util.List;
  * One call per cycle; no allocation.
  */
 public final class FallDetector {
-    private final double cosTilt, gyroLimit, support;
+    private final double cosTilt, gyroLimit, support, sinBack;
     private final int confirmCycles, tiltCycles;
     private FallState state = FallState.STANDING;
     private int downCycles, tiltedCycles;
@@ -25,6 +25,7 @@ public final class FallDetector {
         support = c.fallSupportNewtons();
         confirmCycles = c.fallConfirmCycles();
         tiltCycles = c.fallTiltCycles();
+        sinBack = Math.sin(Math.toRadians(c.fallBackMinDeg()));
     }
 
     /**
@@ -49,7 +50,9 @@ public final class FallDetector {
         }
         if (tilted && carried < support) {
             if (++downCycles >= confirmCycles) {
-                state = acc.y() >= 0 ? FallState.FALLEN_BACK : FallState.FALLEN_FRONT;
+                // the accelerometer's y is the forward axis' share of "up": face up only if clearly positive;
+                // a side-lying robot (y near 0) gets the front get-up, which rolls it onto its front
+                state = acc.y() > sinBack * n ? FallState.FALLEN_BACK : FallState.FALLEN_FRONT;
                 return state;
             }
         } else {

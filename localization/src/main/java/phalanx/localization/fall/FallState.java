@@ -6,9 +6,9 @@ public enum FallState {
     STANDING,
     /** Inertial values above threshold, not confirmed by the feet yet (a collision looks like this too). */
     FALLING,
-    /** Lying face down: the torso's forward axis points at the ground. */
+    /** Lying face down (the torso's forward axis points at the ground), or on a side. */
     FALLEN_FRONT,
-    /** Lying face up: the torso's forward axis points at the sky. */
+    /** Lying face up: the torso's forward axis points at the sky (by more than LocalizationConfig.fallBackMinDeg). */
     FALLEN_BACK;
 
     public boolean isDown() { return this == FALLEN_FRONT || this == FALLEN_BACK; }

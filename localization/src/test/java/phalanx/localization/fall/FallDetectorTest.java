@@ -30,6 +30,32 @@ class FallDetectorTest {
         assertEquals(FallState.FALLEN_FRONT, d.update(prone, Vector3.ZERO, List.of()));
     }
 
+    /** Accelerometer of a robot lying with its forward axis {@code elevDeg} above the horizontal, turned {@code rollDeg} onto a side. */
+    private static Vector3 lying(double elevDeg, double rollDeg) {
+        double e = Math.toRadians(elevDeg), r = Math.toRadians(rollDeg);
+        // "up" seen from the torso: forward (y) share sin e, the rest along the side axis x (and a little z)
+        return new Vector3(9.81 * Math.cos(e) * Math.sin(r), 9.81 * Math.sin(e), 9.81 * Math.cos(e) * Math.cos(r));
+    }
+
+    private static FallState confirmed(Vector3 acc) {
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        FallState s = null;
+        for (int i = 0; i < LocalizationConfig.DEFAULT.fallConfirmCycles(); i++) s = d.update(acc, Vector3.ZERO, List.of());
+        return s;
+    }
+
+    @Test
+    void lyingOnASideGetsTheFrontGetUpAndOnlyAClearlyUpwardChestTheBackOne() {
+        assertEquals(FallState.FALLEN_BACK, confirmed(new Vector3(0, 9.81, 0.2)), "face up");
+        assertEquals(FallState.FALLEN_FRONT, confirmed(new Vector3(0, -9.81, 0.2)), "face down");
+        assertEquals(FallState.FALLEN_FRONT, confirmed(lying(0, 88)), "on the left side");
+        assertEquals(FallState.FALLEN_FRONT, confirmed(lying(0, -88)), "on the right side");
+        assertEquals(FallState.FALLEN_FRONT, confirmed(lying(10, 85)), "on a side, chest 10 degrees up");
+        assertEquals(FallState.FALLEN_FRONT, confirmed(lying(25, -85)), "chest 25 degrees up: still below the 30 degrees");
+        assertEquals(FallState.FALLEN_BACK, confirmed(lying(40, 85)), "chest 40 degrees up: rolled toward the back");
+        assertEquals(FallState.FALLEN_FRONT, confirmed(lying(-40, -85)), "chest 40 degrees down");
+    }
+
     @Test
     void tiltWhileTheFeetCarryTheRobotIsNoFall() {
         FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);

@@ -15,25 +15,31 @@ import java.util.List;
  * @param ballSide    kick trial: and this far to the side of the kicking foot (m)
  * @param diveOffset  dive trial: the shot passes the keeper's centre this far to the diving side (m)
  * @param shotSeconds dive trial: the shot crosses the keeper's line this long after the dive request (s)
+ * @param getupWalkSeconds after a get-up that stood, walk forward at full speed this long (0: no walk)
+ * @param lying           get-up trials to run in each trial round: front, back, side (left/right in turn),
+ *                        oblique (the four diagonals in turn)
  */
 public record BenchOptions(String host, int port, int monitorPort, List<Integer> types, int trials,
                            double walkSeconds, double turnSeconds, Path motions, String only, boolean trace,
-                           List<String> kicks, double ballAhead, double ballSide, double diveOffset, double shotSeconds) {
+                           List<String> kicks, double ballAhead, double ballSide, double diveOffset, double shotSeconds,
+                           double getupWalkSeconds, List<String> lying) {
 
     public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
             + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup|dive] [--trace]"
-            + " [--kicks kick,strong_kick] [--ball-ahead 0.17] [--ball-side 0.055] [--dive-offset 0.6] [--shot-seconds 0.8]";
+            + " [--kicks kick,strong_kick] [--ball-ahead 0.17] [--ball-side 0.055] [--dive-offset 0.6] [--shot-seconds 0.8]"
+            + " [--getup-walk 2] [--lying front,back,side,oblique]";
 
     public static BenchOptions parse(String... args) {
         String host = "127.0.0.1";
         int port = 3100, monitorPort = 3200, trials = 3;
-        double walk = 10, turn = 5;
+        double walk = 10, turn = 5, getupWalk = 2;
         List<Integer> types = List.of(0, 1, 2);
         Path motions = Path.of("motions");
         String only = null;
         boolean trace = false;
         List<String> kicks = List.of("kick", "strong_kick");
         double ballAhead = 0.17, ballSide = 0.055, diveOffset = 0.6, shotSeconds = 0.8;
+        List<String> lying = List.of("front", "back", "side", "oblique");
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(USAGE);
@@ -48,6 +54,16 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 case "--walk-seconds" -> walk = number(flag, v, 1, 600, false);
                 case "--turn-seconds" -> turn = number(flag, v, 1, 600, false);
                 case "--motions" -> motions = Path.of(v);
+                case "--getup-walk" -> getupWalk = number(flag, v, 0, 60, false);
+                case "--lying" -> {
+                    List<String> l = new ArrayList<>();
+                    for (String s : v.split(",")) {
+                        String w = s.strip();
+                        if (!List.of("front", "back", "side", "oblique").contains(w)) throw new IllegalArgumentException("--lying takes front, back, side, oblique, got '" + w + "'");
+                        if (!l.contains(w)) l.add(w);
+                    }
+                    lying = List.copyOf(l);
+                }
                 case "--only" -> {
                     if (!List.of("walk", "turn", "kick", "getup", "dive").contains(v)) throw new IllegalArgumentException("--only must be walk, turn, kick, getup or dive, got '" + v + "'");
                     only = v;
@@ -75,7 +91,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
             }
         }
         return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace,
-                kicks, ballAhead, ballSide, diveOffset, shotSeconds);
+                kicks, ballAhead, ballSide, diveOffset, shotSeconds, getupWalk, lying);
     }
 
     public boolean runs(String what) { return only == null || only.equals(what); }

@@ -13,6 +13,9 @@ import phalanx.motion.control.JointVelocities;
 import phalanx.motion.control.MotionController;
 import phalanx.motion.control.MotionRequest;
 import phalanx.motion.kinematics.LegGeometry;
+import phalanx.motion.walk.WalkConfig;
+import phalanx.motion.walk.WalkController;
+import phalanx.motion.walk.WalkVelocity;
 
 import java.io.IOException;
 import java.util.ArrayList;
@@ -71,8 +74,12 @@ public final class MotionBench {
         int type;
         List<Double> walk = new ArrayList<>(), turnL = new ArrayList<>(), turnR = new ArrayList<>();
         List<Double> kick = new ArrayList<>(), kickDir = new ArrayList<>(), strong = new ArrayList<>(), strongDir = new ArrayList<>();
-        int getupTries, getupOk;
-        List<Double> getupTime = new ArrayList<>();
+        /** Get-ups of one direction (the motion played). */
+        static final class Getups {
+            int tries, ok, walks, walkFalls;
+            List<Double> time = new ArrayList<>();
+        }
+        final Getups front = new Getups(), back = new Getups();
         int falls;
         double walkMinutes;
         final java.util.Map<String, KickStats> kicks = new java.util.LinkedHashMap<>();
@@ -145,13 +152,7 @@ public final class MotionBench {
         Row row = new Row();
         row.type = type;
         standingZ = LegGeometry.forType(type).standingTorsoHeight();
-        agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
-        agent.send(EffectorMessage.scene(type));
-        receive();
-        agent.send(EffectorMessage.init(1, TEAM)); // carries (syn): the next message is answered by cycle()
-        controller = new MotionController(library, MotionConfig.DEFAULT);
-        hold(25);
-        trainer("(playMode PlayOn)");
+        connect(type);
         for (int t = 0; t < opt.trials(); t++) {
             if (opt.runs("walk")) walk(row);
             if (opt.runs("turn")) {
@@ -161,8 +162,7 @@ public final class MotionBench {
             if (opt.runs("kick")) kicks(row);
             if (opt.runs("dive")) dives(row);
             if (opt.runs("getup")) {
-                getUp(row, true);
-                getUp(row, false);
+                for (int k = 0; k < 4; k++) if (opt.lying().contains(List.of("front", "back", "side", "oblique").get(k))) getUp(row, lying(t, k));
             }
             System.err.printf(Locale.ROOT, "type %d trial %d done (%d cycles)%n", type, t + 1, cycles);
         }
@@ -171,8 +171,26 @@ public final class MotionBench {
         return row;
     }
 
+    private long received;
+
+    private int connectedType;
+
+    private void connect(int type) throws IOException {
+        connectedType = type;
+        agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
+        agent.send(EffectorMessage.scene(type));
+        receive();
+        agent.send(EffectorMessage.init(1, TEAM)); // carries (syn): the next message is answered by cycle()
+        controller = new MotionController(library, MotionConfig.DEFAULT);
+        hold(25);
+        trainer("(playMode PlayOn)");
+    }
+
     private void receive() throws IOException {
         agent.reader().next();
+        // partial monitor updates stop matching the scene when the referee or a trainer command changes
+        // it; a full scene every half second keeps the ground truth from going stale (as walk-bench does)
+        if (++received % 25 == 0) trainer("(reqfullstate)");
         try {
             last = parser.parse(agent.reader().buffer(), 0, agent.reader().length());
         } catch (MalformedMessageException e) {
@@ -185,7 +203,9 @@ public final class MotionBench {
     private void cycle(MotionRequest request) throws IOException {
         receive();
         cycles++;
-        JointVelocities v = controller.step(last.time(), last.joints(), request);
+        // the bench's own cycle clock, not the server's float time: in a server that ran freely it advances
+        // in steps of 1/64 s and would stretch or shorten every phase by up to 20 %
+        JointVelocities v = controller.step(simTime(), last.joints(), request);
         v = v.with(Joint.HJ1, 0.2 * Math.sin(cycles * 0.2));
         out.reset();
         v.appendTo(out).syn();
@@ -366,51 +386,139 @@ public final class MotionBench {
         return new double[] {dist, Math.abs(err), fell ? 1 : 0}; // the next place() stands it up again
     }
 
+    /**
+     * The agent's choice (localization FallDetector with LocalizationConfig.fallBackMinDeg = 30): the back
+     * get-up only when the chest faces more than 30 degrees up; on a side, the front one.
+     */
+    static boolean lyingOnBack(MonitorScene.Pose p) { return p.forwardZ() > Math.sin(Math.toRadians(30)); }
+
     private void getUpQuietly() throws IOException {
         for (int tries = 0; tries < 3 && fallen(); tries++) {
             MonitorScene.Pose p = torso();
-            String m = p.forwardZ() > 0 ? "stand_up_back" : "stand_up_front";
+            String m = lyingOnBack(p) ? "stand_up_back" : "stand_up_front";
             long done = controller.completions();
             for (int i = 0; i < 300 && controller.completions() == done; i++) cycle(MotionRequest.of(m).interrupting());
             hold(50);
         }
     }
 
-    /** Tips the robot over with its ankles (S3 in the recordings: -2 rad/s falls on the back), then stands it up. */
-    private void getUp(Row row, boolean back) throws IOException {
+    /**
+     * The lying positions a get-up trial starts from: tipped over by the ankles in a direction
+     * (0° forward, 180° backward, ±90° onto a side, the obliques in between), with the arms and legs
+     * held in a random pose while falling, as after a walk step, a kick or a collision.
+     */
+    enum Lying {
+        FRONT(0), BACK(180), LEFT(90), RIGHT(-90), FRONT_LEFT(35), FRONT_RIGHT(-35), BACK_LEFT(145), BACK_RIGHT(-145);
+        final double deg;
+        Lying(double deg) { this.deg = deg; }
+    }
+
+    /** Trial i of a type: front, back, a side, an oblique, in turn. */
+    static Lying lying(int trial, int k) {
+        return switch (k) {
+            case 0 -> Lying.FRONT;
+            case 1 -> Lying.BACK;
+            case 2 -> trial % 2 == 0 ? Lying.LEFT : Lying.RIGHT;
+            default -> List.of(Lying.FRONT_LEFT, Lying.BACK_RIGHT, Lying.FRONT_RIGHT, Lying.BACK_LEFT).get(trial % 4);
+        };
+    }
+
+    private final java.util.Random random = new java.util.Random(6);
+
+    /**
+     * Tips the robot over (ankle pitch for forward/backward as in recording S3, ankle and hip roll
+     * sideways), lets it lie still, then requests the get-up the agent would choose (from the sign
+     * of the torso's forward axis, as FallDetector does with the accelerometer). Success: upright
+     * (not fallen by the walk's test) 1 s after the motion ended; time: from the request until the
+     * torso is upright at 3/4 of standing height. With --getup-walk the walk then starts at full speed.
+     */
+    private void getUp(Row row, Lying lying) throws IOException {
         place(4, 4);
-        double v = back ? -2 : 2;
+        if (fallen()) {
+            // seen twice in long runs: the robot kept lying on its back after every trainer move (its
+            // body stuck in the server); a new player is the only way out, and the trial starts afresh
+            System.err.printf(Locale.ROOT, "  the robot does not stand after a trainer move: reconnecting it%n");
+            agent.close();
+            hold0(50);
+            connect(connectedType);
+            place(4, 4);
+            if (fallen()) throw new IOException("the robot does not stand after a trainer move, even as a new player");
+        }
+        double[] pose = new double[Joint.COUNT];          // random limbs, held during the fall
+        java.util.Arrays.fill(pose, Double.NaN);
+        double sh = -120 + 160 * random.nextDouble(), hip = -10 + 50 * random.nextDouble(), knee = -70 * random.nextDouble();
+        pose[Joint.LAJ1.ordinal()] = sh + 20 * random.nextGaussian();
+        pose[Joint.RAJ1.ordinal()] = sh + 20 * random.nextGaussian();
+        pose[Joint.LAJ2.ordinal()] = 40 * random.nextDouble();
+        pose[Joint.RAJ2.ordinal()] = -40 * random.nextDouble();
+        pose[Joint.LLJ3.ordinal()] = hip;
+        pose[Joint.RLJ3.ordinal()] = hip + 10 * random.nextGaussian();
+        pose[Joint.LLJ4.ordinal()] = knee;
+        pose[Joint.RLJ4.ordinal()] = knee + 10 * random.nextGaussian();
+        double a = Math.toRadians(lying.deg + 10 * random.nextGaussian());
+        double pitch = 2 * Math.cos(a), roll = 2 * Math.sin(a);
         for (int i = 0; i < 150 && !fallen(); i++) {
             receive();
-            out.reset().hinge(Joint.LLJ5, v).hinge(Joint.RLJ5, v);
-            if (!back) out.hinge(Joint.LLJ3, 1).hinge(Joint.RLJ3, 1).hinge(Joint.LAJ1, 3).hinge(Joint.RAJ1, 3);
+            out.reset();
+            for (Joint j : Joint.values()) {
+                if (!last.joints().has(j) || Double.isNaN(pose[j.ordinal()])) continue;
+                out.hinge(j, Math.max(-6, Math.min(6, Math.toRadians(pose[j.ordinal()] - last.joints().degrees(j)) * 5)));
+            }
+            // + ankle pitch tips forward; + ankle/hip roll moves the legs left, the torso tips right
+            out.hinge(Joint.LLJ5, pitch).hinge(Joint.RLJ5, pitch)
+               .hinge(Joint.LLJ6, -roll).hinge(Joint.RLJ6, -roll).hinge(Joint.LLJ2, -roll).hinge(Joint.RLJ2, -roll);
             agent.send(out.syn().text());
         }
-        hold(100); // lie still
-        if (!fallen()) return; // did not fall: not a get-up trial
+        hold(50 + random.nextInt(75)); // lie still 1-2.5 s
+        if (!fallen()) {
+            System.err.printf(Locale.ROOT, "  getup %s: did not fall, no trial%n", lying);
+            return;
+        }
         MonitorScene.Pose p = torso();
-        String motion = p.forwardZ() > 0 ? "stand_up_back" : "stand_up_front";
-        row.getupTries++;
+        boolean front = !lyingOnBack(p);
+        Row.Getups g = front ? row.front : row.back;
+        String motion = front ? "stand_up_front" : "stand_up_back";
+        g.tries++;
         double t0 = simTime();
         double upAt = Double.NaN;
         long done = controller.completions();
         MotionRequest r = MotionRequest.of(motion).interrupting();
-        double maxZ = 0;
+        double best = 0;
         for (int i = 0; i < 400 && controller.completions() == done; i++) {
             cycle(r);
-            maxZ = Math.max(maxZ, torso().z() * Math.max(0, torso().upZ()));
+            best = Math.max(best, torso().z() * Math.max(0, torso().upZ()) / standingZ);
             if (Double.isNaN(upAt) && torso().upZ() > 0.9 && torso().z() > 0.75 * standingZ) upAt = simTime() - t0;
         }
-        for (int i = 0; i < 50; i++) cycle(MotionRequest.NONE); // must still stand 1 s later
-        boolean ok = !fallen() && torso().z() > 0.6 * standingZ;
+        double motionEnd = simTime() - t0;
+        boolean stood = true;
+        for (int i = 0; i < 50 && stood; i++) {          // must still stand 1 s later
+            cycle(MotionRequest.NONE);
+            stood = !fallen();
+        }
+        boolean ok = stood && !Double.isNaN(upAt);
+        boolean walkFell = false;
         if (ok) {
-            row.getupOk++;
-            row.getupTime.add(Double.isNaN(upAt) ? simTime() - t0 : upAt);
+            g.ok++;
+            g.time.add(upAt);
+            if (opt.getupWalkSeconds() > 0) {
+                WalkController walk = new WalkController(WalkConfig.forType(row.type), row.type, MotionConfig.DEFAULT);
+                WalkVelocity v = new WalkVelocity(WalkConfig.forType(row.type).maxForward(), 0, 0);
+                for (int i = 0; i < opt.getupWalkSeconds() / 0.02 && !walkFell; i++) {
+                    receive();
+                    cycles++;
+                    out.reset();
+                    walk.step(last.joints(), last.gyro(), last.acc(), v).appendTo(out).syn();
+                    agent.send(out.text());
+                    walkFell = fallen();
+                }
+                g.walks++;
+                if (walkFell) g.walkFalls++;
+            }
         }
         MonitorScene.Pose e = torso();
-        System.err.printf(Locale.ROOT, "  getup %s (%s): %s  max z*up %.3f, end z %.3f up %.2f%n", motion, back ? "pushed back" : "pushed front",
-                ok ? "ok" : "failed", maxZ, e.z(), e.upZ());
-        if (!ok) getUpQuietly();
+        System.err.printf(Locale.ROOT, "  getup %-11s %-14s %s  up at %.2f s, motion %.2f s, best %.2f, end z %.3f up %.2f%s%n", lying, motion,
+                ok ? "ok    " : "FAILED", upAt, motionEnd, best, e.z(), e.upZ(), walkFell ? ", fell in the walk after" : "");
+        if (!ok || walkFell) getUpQuietly();
     }
 
     // --- dives -------------------------------------------------------------------------------------
@@ -479,7 +587,7 @@ public final class MotionBench {
         return l.stream().filter(d -> !Double.isNaN(d)).mapToDouble(Double::doubleValue).average().orElse(Double.NaN);
     }
 
-    private static double median(List<Double> l) {
+    static double median(List<Double> l) {
         double[] d = l.stream().filter(x -> !Double.isNaN(x)).mapToDouble(Double::doubleValue).sorted().toArray();
         if (d.length == 0) return Double.NaN;
         return d.length % 2 == 1 ? d[d.length / 2] : (d[d.length / 2 - 1] + d[d.length / 2]) / 2;
@@ -512,24 +620,38 @@ public final class MotionBench {
         }
     }
 
+    private static double max(List<Double> l) { return l.stream().mapToDouble(Double::doubleValue).max().orElse(Double.NaN); }
+
     private void print(List<Row> rows) {
         printKicksAndDives(rows);
         System.out.println("type | walk m/s | falls | turn L deg/s | turn R deg/s | kick m (dir err deg) | strong kick m (dir err deg) | get-up ok | get-up s");
-        double walk = 0, turn = 0, kick = 0, strong = 0, getup = 0, getupS = 0, falls = 0, minutes = 0;
+        double walk = 0, turn = 0, kick = 0, strong = 0, getupS = 0, falls = 0, minutes = 0;
         int tries = 0, ok = 0;
         for (Row r : rows) {
+            List<Double> times = new ArrayList<>(r.front.time);
+            times.addAll(r.back.time);
+            int rt = r.front.tries + r.back.tries, rk = r.front.ok + r.back.ok;
             System.out.printf(Locale.ROOT, "%4d | %8.3f | %5d | %12.1f | %12.1f | %8.2f (%5.1f) | %8.2f (%5.1f) | %3d/%-3d | %6.2f%n",
                     r.type, mean(r.walk), r.falls, mean(r.turnL), mean(r.turnR), mean(r.kick), mean(r.kickDir),
-                    mean(r.strong), mean(r.strongDir), r.getupOk, r.getupTries, mean(r.getupTime));
+                    mean(r.strong), mean(r.strongDir), rk, rt, mean(times));
             walk += mean(r.walk);
             turn += (mean(r.turnL) + mean(r.turnR)) / 2;
             kick += mean(r.kick);
             strong += mean(r.strong);
-            getupS += mean(r.getupTime);
+            getupS += mean(times);
             falls += r.falls;
             minutes += r.walkMinutes;
-            tries += r.getupTries;
-            ok += r.getupOk;
+            tries += rt;
+            ok += rk;
+        }
+        if (opt.runs("getup") && tries > 0) {
+            System.out.println("type | get-up | ok    | median s | max s | walk after: falls/runs");
+            for (Row r : rows) {
+                for (Row.Getups g : List.of(r.front, r.back)) {
+                    System.out.printf(Locale.ROOT, "%4d | %-6s | %2d/%-2d | %8.2f | %5.2f | %d/%d%n", r.type, g == r.front ? "front" : "back",
+                            g.ok, g.tries, median(g.time), max(g.time), g.walkFalls, g.walks);
+                }
+            }
         }
         int n = rows.size();
         System.out.printf(Locale.ROOT, "walk_mps=%.3f turn_dps=%.1f kick_m=%.2f strong_kick_m=%.2f getup_success=%.2f getup_s=%.2f falls_per_min=%.2f%n",

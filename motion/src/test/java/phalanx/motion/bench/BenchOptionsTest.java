@@ -43,6 +43,16 @@ class BenchOptionsTest {
         assertTrue(msg("--kicks", ",").contains("--kicks needs at least one motion name"));
         assertTrue(msg("--ball-ahead", "1").contains("--ball-ahead must be in [0, 0.5], got 1"));
         assertTrue(msg("--shot-seconds", "x").contains("--shot-seconds needs a number, got 'x'"));
+        assertTrue(msg("--lying", "front,upside-down").contains("--lying takes front, back, side, oblique, got 'upside-down'"));
+        assertTrue(msg("--getup-walk", "-1").contains("--getup-walk must be in [0, 60]"));
+    }
+
+    @Test
+    void getupFlags() {
+        BenchOptions o = BenchOptions.parse("--lying", "back, side", "--getup-walk", "0");
+        assertEquals(java.util.List.of("back", "side"), o.lying());
+        assertEquals(0, o.getupWalkSeconds());
+        assertEquals(java.util.List.of("front", "back", "side", "oblique"), BenchOptions.parse().lying());
     }
 
     private static String msg(String... args) {
