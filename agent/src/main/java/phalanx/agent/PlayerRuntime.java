@@ -35,6 +35,7 @@ public final class PlayerRuntime {
     private final BeamPolicy beams;
     private PlayMode playMode;
     private double gameTime;
+    private final FallLog fallLog = new FallLog();
     private long cycles;
     private long malformed;
     private TeamPlan drawnPlan;
@@ -81,6 +82,7 @@ public final class PlayerRuntime {
         Situation.MotionStatus motion = parts.motionStatus();
         parts.beliefs().bodyBusy(!motion.idle());
         WorldBelief belief = parts.beliefs().update(p);                                                  // model
+        fallLog.update(belief.fall(), gameTime);
         Situation s = new Situation(p.time(), cycles, playMode, gameTime, belief, parts.field(), p.joints(), motion);
         int unum = belief.unum() > 0 ? belief.unum() : options.unum();
         PlayerParts.Role role = parts.role(unum);

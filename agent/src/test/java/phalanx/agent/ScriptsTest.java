@@ -60,4 +60,29 @@ class ScriptsTest {
         assertEquals(0, r.status());
         assertTrue(r.output().contains("stopped 0 player(s)"), r.output());
     }
+
+    /** player-stats on a log folder written by hand: think times, GC pauses, falls and the time lying. */
+    @Test
+    void playerStatsCountsThinkTimesGcPausesAndFalls() throws Exception {
+        Path dir = Files.createTempDirectory("player-stats");
+        Files.writeString(dir.resolve("player-1.out"), String.join("\n",
+                "INFO: think_us p50=100 p99=900 max=2500 cycles=3000 over_20ms=0",
+                "INFO: fall 1: FALLEN_BACK at game time 10.00",
+                "INFO: fall 1: standing again at game time 13.00 after 3.00 s",
+                "INFO: fall 2: FALLEN_FRONT at game time 50.00", ""));
+        Files.writeString(dir.resolve("player-2.out"), String.join("\n",
+                "INFO: think_us p50=120 p99=1500 max=30000 cycles=3000 over_20ms=3",
+                "INFO: fall 1: FALLEN_FRONT at game time 20.00",
+                "INFO: fall 1: standing again at game time 22.00 after 2.00 s",
+                "INFO: fall 2: FALLEN_FRONT at game time 40.00",
+                "INFO: fall 2: standing again at game time 46.00 after 6.00 s", ""));
+        Files.writeString(dir.resolve("gc-1.log"), "[1.0s][info] GC(0) Pause Young (Allocation Failure) 11M->2M(30M) 0.629ms\n");
+        Files.writeString(dir.resolve("gc-2.log"), "[1.0s][info] GC(0) Pause Young (Allocation Failure) 11M->2M(30M) 7.5ms\n"
+                + "[2.0s][info] GC(1) Pause Young (Allocation Failure) 11M->2M(30M) 1.0ms\n");
+        Run r = run("bash", "scripts/player-stats", dir.toString());
+        assertEquals(0, r.status(), r.output());
+        String last = r.output().strip().lines().reduce((a, b) -> b).orElse("");
+        assertEquals("think_p50_us_max=120 think_p99_us_max=1500 think_max_us=30000 cycles=6000 over_20ms=3 over_20ms_share=0.0005"
+                + " gc_pauses=3 gc_max_ms=7.5 falls=4 stood_up=3 down_s_median=3.00", last);
+    }
 }
