@@ -3,9 +3,6 @@ package phalanx.motion.bench;
 import phalanx.comm.effector.EffectorMessage;
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.Perception;
-import phalanx.comm.sexp.MalformedMessageException;
-import phalanx.comm.sexp.PerceptionParser;
-import phalanx.comm.wire.ServerConnection;
 import phalanx.motion.MotionConfig;
 import phalanx.motion.MotionFileException;
 import phalanx.motion.MotionLibrary;
@@ -29,17 +26,12 @@ import java.util.Locale;
  * Prints a table; the last line is the summary (means over the types).
  */
 public final class MotionBench {
-    private static final String TEAM = "PhalanxBench";
     private final BenchOptions opt;
     private final MotionLibrary library;
-    private final MonitorScene scene = new MonitorScene();
-    private ServerConnection monitor;
-    private volatile String monitorError;
+    private BenchRig rig;
 
     // the player of the type being measured
-    private ServerConnection agent;
     private MotionController controller;
-    private final PerceptionParser parser = new PerceptionParser();
     private final EffectorMessage out = new EffectorMessage();
     private Perception last;
     private double standingZ;
@@ -99,52 +91,19 @@ public final class MotionBench {
     }
 
     private void run() throws IOException {
-        monitor = ServerConnection.connect(opt.host(), opt.monitorPort(), 10_000);
-        Thread reader = new Thread(this::readMonitor, "monitor");
-        reader.setDaemon(true);
-        reader.start();
+        rig = BenchRig.open(opt.host(), opt.monitorPort(), "motion-bench");
         trainer("(playMode PlayOn)");
         List<Row> rows = new ArrayList<>();
         for (int type : opt.types()) rows.add(measure(type));
-        monitor.close();
+        rig.close();
         print(rows);
     }
 
-    private void readMonitor() {
-        try {
-            while (true) {
-                monitor.reader().next();
-                String text = monitor.reader().text();
-                synchronized (scene) {
-                    try {
-                        scene.apply(text);
-                    } catch (IllegalArgumentException e) {
-                        monitorError = e.getMessage();
-                    }
-                }
-            }
-        } catch (IOException e) {
-            monitorError = "monitor connection: " + e.getMessage();
-        }
-    }
+    private void trainer(String command) throws IOException { rig.trainer(command); }
 
-    private void trainer(String command) throws IOException {
-        synchronized (monitor) {
-            monitor.send(command);
-        }
-    }
+    private MonitorScene.Pose torso() { return rig.torso(); }
 
-    private MonitorScene.Pose torso() {
-        synchronized (scene) {
-            return scene.torso(1, "Left");
-        }
-    }
-
-    private double[] ball() {
-        synchronized (scene) {
-            return scene.ball();
-        }
-    }
+    private double[] ball() { return rig.ball(); }
 
     // --- the player -----------------------------------------------------------------------------
 
@@ -166,38 +125,23 @@ public final class MotionBench {
             }
             System.err.printf(Locale.ROOT, "type %d trial %d done (%d cycles)%n", type, t + 1, cycles);
         }
-        agent.close();
+        rig.disconnect();
         hold0(50); // let the server drop the player before the next type connects
         return row;
     }
-
-    private long received;
 
     private int connectedType;
 
     private void connect(int type) throws IOException {
         connectedType = type;
-        agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
-        agent.send(EffectorMessage.scene(type));
-        receive();
-        agent.send(EffectorMessage.init(1, TEAM)); // carries (syn): the next message is answered by cycle()
+        rig.connect(opt.host(), opt.port(), type);
+        last = rig.last();
         controller = new MotionController(library, MotionConfig.DEFAULT);
         hold(25);
         trainer("(playMode PlayOn)");
     }
 
-    private void receive() throws IOException {
-        agent.reader().next();
-        // partial monitor updates stop matching the scene when the referee or a trainer command changes
-        // it; a full scene every half second keeps the ground truth from going stale (as walk-bench does)
-        if (++received % 25 == 0) trainer("(reqfullstate)");
-        try {
-            last = parser.parse(agent.reader().buffer(), 0, agent.reader().length());
-        } catch (MalformedMessageException e) {
-            System.err.println("motion-bench: skipped a malformed server message: " + e.getMessage());
-        }
-        if (monitorError != null) throw new IOException(monitorError);
-    }
+    private void receive() throws IOException { last = rig.receive(); }
 
     /** One cycle: read, step the controller, reply. A small head motion keeps trainer-moved robots from hanging. */
     private void cycle(MotionRequest request) throws IOException {
@@ -209,7 +153,7 @@ public final class MotionBench {
         v = v.with(Joint.HJ1, 0.2 * Math.sin(cycles * 0.2));
         out.reset();
         v.appendTo(out).syn();
-        agent.send(out.text());
+        rig.send(out.text());
         if (opt.trace() && cycles % 5 == 0) {
             MonitorScene.Pose p = torso();
             double[] b = ball();
@@ -253,7 +197,7 @@ public final class MotionBench {
                 double target = Double.isNaN(ready[j.ordinal()]) ? 0 : ready[j.ordinal()];
                 out.hinge(j, Math.max(-6, Math.min(6, Math.toRadians(target - last.joints().degrees(j)) * 10)));
             }
-            agent.send(out.syn().text());
+            rig.send(out.syn().text());
         }
         trainer(String.format(Locale.ROOT, "(agent (unum 1) (team Left) (move %.3f %.3f %.3f -90))", x, y, standingZ - 0.02));
         hold(50);
@@ -438,7 +382,7 @@ public final class MotionBench {
             // seen twice in long runs: the robot kept lying on its back after every trainer move (its
             // body stuck in the server); a new player is the only way out, and the trial starts afresh
             System.err.printf(Locale.ROOT, "  the robot does not stand after a trainer move: reconnecting it%n");
-            agent.close();
+            rig.disconnect();
             hold0(50);
             connect(connectedType);
             place(4, 4);
@@ -467,7 +411,7 @@ public final class MotionBench {
             // + ankle pitch tips forward; + ankle/hip roll moves the legs left, the torso tips right
             out.hinge(Joint.LLJ5, pitch).hinge(Joint.RLJ5, pitch)
                .hinge(Joint.LLJ6, -roll).hinge(Joint.RLJ6, -roll).hinge(Joint.LLJ2, -roll).hinge(Joint.RLJ2, -roll);
-            agent.send(out.syn().text());
+            rig.send(out.syn().text());
         }
         hold(50 + random.nextInt(75)); // lie still 1-2.5 s
         if (!fallen()) {
@@ -508,7 +452,7 @@ public final class MotionBench {
                     cycles++;
                     out.reset();
                     walk.step(last.joints(), last.gyro(), last.acc(), v).appendTo(out).syn();
-                    agent.send(out.text());
+                    rig.send(out.text());
                     walkFell = fallen();
                 }
                 g.walks++;
@@ -558,7 +502,7 @@ public final class MotionBench {
             double t = simTime() - t0;
             if (Double.isNaN(down) && fallen()) down = t;
             List<double[]> parts;
-            synchronized (scene) { parts = scene.parts(1, "Left"); }
+            parts = rig.scene(sc -> sc.parts(1, "Left"));
             if (i < reachAt.length && parts != null) {
                 double m = -1;
                 for (double[] q : parts) m = Math.max(m, side * (q[1] - startY));

@@ -2,10 +2,8 @@ package phalanx.motion.walk;
 
 import phalanx.comm.effector.EffectorMessage;
 import phalanx.comm.perception.Perception;
-import phalanx.comm.sexp.MalformedMessageException;
-import phalanx.comm.sexp.PerceptionParser;
-import phalanx.comm.wire.ServerConnection;
 import phalanx.motion.MotionConfig;
+import phalanx.motion.bench.BenchRig;
 import phalanx.motion.bench.MonitorScene;
 import phalanx.motion.control.JointVelocities;
 import phalanx.motion.kinematics.LegGeometry;
@@ -23,15 +21,9 @@ import java.util.Map;
  * fields by coordinate descent on the forward speed instead, and prints the best config.
  */
 public final class WalkTrial {
-    private static final String TEAM = "PhalanxWalk";
     private static final boolean TRACE = System.getenv("WALK_TRACE") != null;
     private final WalkTrialOptions opt;
-    private final MonitorScene scene = new MonitorScene();
-    private ServerConnection monitor;
-    private volatile String monitorError;
-
-    private ServerConnection agent;
-    private final PerceptionParser parser = new PerceptionParser();
+    private BenchRig rig;
     private final EffectorMessage out = new EffectorMessage();
     private Perception last;
     private int type;
@@ -65,18 +57,15 @@ public final class WalkTrial {
     }
 
     private void run() throws IOException {
-        monitor = ServerConnection.connect(opt.host(), opt.monitorPort(), 10_000);
-        Thread reader = new Thread(this::readMonitor, "monitor");
-        reader.setDaemon(true);
-        reader.start();
+        rig = BenchRig.open(opt.host(), opt.monitorPort(), "walk-bench");
         for (int t : opt.types()) {
             connect(t);
             if (opt.search().isEmpty()) measure(opt.config(t));
             else search(opt.config(t));
-            agent.close();
+            rig.disconnect();
             sleep(300); // let the server drop the player before the next one connects
         }
-        monitor.close();
+        rig.close();
     }
 
     // --- trials ---------------------------------------------------------------------------------
@@ -235,12 +224,8 @@ public final class WalkTrial {
 
     private void connect(int t) throws IOException {
         type = t;
-        agent = ServerConnection.connect(opt.host(), opt.port(), 10_000);
-        agent.send(EffectorMessage.scene(t));
-        receive();
-        agent.send(EffectorMessage.init(1, TEAM));
-        receive();
-        agent.send("(syn)"); // answers that message: in agent-sync mode the server waits for it; cycle() receives first
+        rig.connect(opt.host(), opt.port(), t);
+        last = rig.last();
         walk = new WalkController(WalkConfig.forType(t), t, MotionConfig.DEFAULT);
         for (int i = 0; i < 25; i++) cycle(WalkVelocity.ZERO);
         trainer("(playMode PlayOn)");
@@ -249,50 +234,15 @@ public final class WalkTrial {
     }
 
     private void cycle(WalkVelocity request) throws IOException {
-        receive();
+        last = rig.receive();
         cycles++;
-        // partial monitor updates stop applying when the scene graph changes shape (a player comes
-        // or goes); a full graph now and then puts the reader back on track
-        if (cycles % 25 == 0) trainer("(reqfullstate)");
         JointVelocities v = walk.step(last.joints(), last.gyro(), last.acc(), request);
         out.reset();
         v.appendTo(out).syn();
-        agent.send(out.text());
+        rig.send(out.text());
     }
 
-    private void receive() throws IOException {
-        agent.reader().next();
-        try {
-            last = parser.parse(agent.reader().buffer(), 0, agent.reader().length());
-        } catch (MalformedMessageException e) {
-            System.err.println("walk-bench: skipped a malformed server message: " + e.getMessage());
-        }
-        if (monitorError != null) throw new IOException(monitorError);
-    }
-
-    private void readMonitor() {
-        try {
-            while (true) {
-                monitor.reader().next();
-                String text = monitor.reader().text();
-                synchronized (scene) {
-                    try {
-                        scene.apply(text);
-                    } catch (IllegalArgumentException e) {
-                        monitorError = e.getMessage();
-                    }
-                }
-            }
-        } catch (IOException e) {
-            monitorError = "monitor connection: " + e.getMessage();
-        }
-    }
-
-    private void trainer(String command) throws IOException {
-        synchronized (monitor) {
-            monitor.send(command);
-        }
-    }
+    private void trainer(String command) throws IOException { rig.trainer(command); }
 
     /**
      * Simulated seconds, counted in cycles of 0.02 s: the server's {@code now} is a float32 that,
@@ -300,17 +250,9 @@ public final class WalkTrial {
      */
     private double clock() { return cycles * 0.02; }
 
-    private int monitorMessages() {
-        synchronized (scene) {
-            return scene.messages();
-        }
-    }
+    private int monitorMessages() { return rig.scene(MonitorScene::messages); }
 
-    private MonitorScene.Pose torso() {
-        synchronized (scene) {
-            return scene.torso(1, "Left");
-        }
-    }
+    private MonitorScene.Pose torso() { return rig.torso(); }
 
     private static void sleep(long ms) {
         try {
