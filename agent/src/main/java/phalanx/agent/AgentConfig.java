@@ -120,11 +120,17 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param liberoExitMargin  the ball is cleared when this far outside the goal area (ours)
      * @param liberoMaxSpeed    Libero only for a ball slower than this (ours: a shot rolling through
      *                          the goal area is Guard's business)
+     * @param libero            whether Guard goes Libero at all (5.13: yes). Off by default while every kick
+     *                          ends with the robot on the ground (motion/README.md): in the 6.3 test against
+     *                          FC Portugal each Libero clearance left the keeper lying in front of an open goal
+     *                          (docs/matches.md, scripts/keeper-test)
      */
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,
-                         double liberoExitMargin, double liberoMaxSpeed) {
-        public static final Keeper DEFAULT = new Keeper(0.5, 0.7, 0.15, 0.08, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0);
+                         double liberoExitMargin, double liberoMaxSpeed, boolean libero) {
+        public static final Keeper DEFAULT = new Keeper(0.5, 0.7, 0.15, 0.08, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0, false);
+        /** The thesis's keeper: Libero on. */
+        public static final Keeper THESIS = new Keeper(0.5, 0.7, 0.15, 0.08, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0, true);
     }
 
     /**

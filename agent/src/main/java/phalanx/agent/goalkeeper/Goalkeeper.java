@@ -151,6 +151,7 @@ public final class Goalkeeper implements Action {
 
     /** Libero: the ball inside our goal area, (nearly) still, and no other player near it. */
     private boolean liberoChance(Situation s) {
+        if (!config.keeper().libero()) return false;
         Vector2 ball = Facts.ballGlobal(s, config);
         if (ball == null || s.field() == null || !inGoalArea(s.field(), ball, 0)) return false;
         Vector2 v = Facts.ballVelocity(s);

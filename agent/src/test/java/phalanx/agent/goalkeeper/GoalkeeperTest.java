@@ -13,8 +13,10 @@ class GoalkeeperTest {
     private static final AgentConfig C = AgentConfig.DEFAULT;
 
     /** A keeper already in GUARD on its spot. */
-    private static Goalkeeper guarding() {
-        Goalkeeper k = new Goalkeeper(C);
+    private static Goalkeeper guarding() { return guarding(C); }
+
+    private static Goalkeeper guarding(AgentConfig c) {
+        Goalkeeper k = new Goalkeeper(c);
         k.decide(World.at(-14.5, 0, 0).ballAt(0, 0).situation());
         assertEquals(Goalkeeper.State.GUARD, k.state());
         return k;
@@ -88,7 +90,8 @@ class GoalkeeperTest {
 
     @Test
     void liberoClearsABallLyingInTheGoalAreaWhenNobodyIsNearIt() {
-        Goalkeeper k = guarding();
+        AgentConfig thesis = C.withKeeper(AgentConfig.Keeper.THESIS);
+        Goalkeeper k = guarding(thesis);
         k.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).situation());
         assertEquals(Goalkeeper.State.LIBERO, k.state());
         assertTrue(k.hasBall());
@@ -97,13 +100,18 @@ class GoalkeeperTest {
         assertEquals(Goalkeeper.State.LOCALIZE, k.state());
         assertFalse(k.hasBall());
         // A ball rolling through the goal area at 2 m/s is not Libero's.
-        Goalkeeper r = guarding();
+        Goalkeeper r = guarding(thesis);
         r.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 1.5).ballVelocity(0, 2).situation());
         assertEquals(Goalkeeper.State.GUARD, r.state());
         // An opponent next to the ball: the keeper stays in its goal.
-        Goalkeeper g = guarding();
+        Goalkeeper g = guarding(thesis);
         g.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).opponentAt(9, -13.2, 0.8).situation());
         assertEquals(Goalkeeper.State.GUARD, g.state());
+        // Our default while kicks end on the ground: no Libero, the keeper keeps its goal.
+        Goalkeeper d = guarding();
+        d.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).situation());
+        assertEquals(Goalkeeper.State.GUARD, d.state());
+        assertFalse(d.hasBall());
     }
 
     @Test
