@@ -12,6 +12,11 @@ import phalanx.localization.fall.FallState;
  * 4.6.1 Stand Up: after a confirmed fall (the belief store's FALLEN_FRONT / FALLEN_BACK) play the
  * matching stand-up motion to its end, then look again: still down, play it again ("repeated until
  * it succeeds"). While only FALLING (not confirmed; a collision looks the same) it waits.
+ * Unlike a kick, the get-up stays requested for its whole play: the files begin with a one-cycle
+ * {@code Begin} phase whose finalize leads to {@code Done} (motions/README.md), so a get-up nobody
+ * requests any more leaves after that cycle. Requesting it only until it showed as playing (as kicks
+ * are) ended every get-up after 20 ms: in a game against FC Portugal our players lay until the next
+ * goal's beam (183 falls in 600 s, none stood up by itself).
  */
 public final class StandUp implements Action {
     private final OneShot play;
@@ -21,9 +26,7 @@ public final class StandUp implements Action {
 
     @Override
     public Decision decide(Situation s) {
-        if (play.active() && !play.finished(s)) {
-            return Decision.of(play.requesting() ? new Move.StandUp(fromFront) : Move.STAND, HeadTarget.STRAIGHT);
-        }
+        if (play.active() && !play.finished(s)) return Decision.of(new Move.StandUp(fromFront), HeadTarget.STRAIGHT);
         FallState f = Facts.fall(s);
         if (f.isDown()) {
             fromFront = f == FallState.FALLEN_FRONT;

@@ -99,11 +99,11 @@ class BasicActionsTest {
         assertEquals(new Move.StandUp(false), u.decide(w.time(10).situation()).move());
         // Not playing yet (one cycle of latency): still requested.
         assertEquals(new Move.StandUp(false), u.decide(w.time(10.02).situation()).move());
-        // Playing: no longer requested, so the controller does not replay it at its end.
+        // Playing: still requested for its whole play (its Begin phase leaves through Done otherwise).
         w.motion("stand_up_back", null, 0);
-        assertEquals(Move.STAND, u.decide(w.time(10.04).situation()).move());
+        assertEquals(new Move.StandUp(false), u.decide(w.time(10.04).situation()).move());
         w.fall(FallState.FALLING);                                     // rising: still busy
-        assertEquals(Move.STAND, u.decide(w.time(11).situation()).move());
+        assertEquals(new Move.StandUp(false), u.decide(w.time(11).situation()).move());
         assertTrue(u.busy());
         // The motion ended with the robot still on its back: once more.
         w.fall(FallState.FALLEN_BACK).motion(null, "stand_up_back", 1);
