@@ -66,11 +66,20 @@ public final class KeeperTest {
             if (a.get("halves", null) == null) args.addAll(List.of("--halves", "1"));
             args.add("--allow-empty");
             Args match = MatchOptions.parse(args.toArray(String[]::new), USAGE, "keeper-test", own, Set.of());
+            // Ctrl-C stops the game being played and everything it started (as scripts/tournament does).
+            final MatchRunner[] current = new MatchRunner[1];
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+                synchronized (current) {
+                    if (current[0] != null) current[0].abort("keeper-test interrupted");
+                }
+            }, "keeper-test-stop"));
             for (Condition c : conditions) {
                 for (int g = 1; g <= games; g++) {
                     String tag = String.format(Locale.ROOT, "%s-%02d", c.name(), g);
                     MatchConfig cfg = MatchOptions.config(match, c.team(), attacker, out.resolve(tag), out.resolve(tag + ".json"));
-                    MatchResult r = new MatchRunner(cfg, System.out).run();
+                    MatchRunner runner = new MatchRunner(cfg, System.out);
+                    synchronized (current) { current[0] = runner; }
+                    MatchResult r = runner.run();
                     System.out.println(Tournament.progressLine(g, games, r));
                 }
             }
