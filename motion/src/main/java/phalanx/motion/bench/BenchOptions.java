@@ -50,11 +50,11 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 case "--host" -> host = v;
                 case "--port" -> port = port(flag, v);
                 case "--monitor-port" -> monitorPort = port(flag, v);
-                case "--trials" -> trials = (int) number(flag, v, 1, 100, true);
-                case "--walk-seconds" -> walk = number(flag, v, 1, 600, false);
-                case "--turn-seconds" -> turn = number(flag, v, 1, 600, false);
+                case "--trials" -> trials = (int) BenchFlags.number(flag, v, 1, 100, true);
+                case "--walk-seconds" -> walk = BenchFlags.number(flag, v, 1, 600, false);
+                case "--turn-seconds" -> turn = BenchFlags.number(flag, v, 1, 600, false);
                 case "--motions" -> motions = Path.of(v);
-                case "--getup-walk" -> getupWalk = number(flag, v, 0, 60, false);
+                case "--getup-walk" -> getupWalk = BenchFlags.number(flag, v, 0, 60, false);
                 case "--lying" -> {
                     List<String> l = new ArrayList<>();
                     for (String s : v.split(",")) {
@@ -74,19 +74,11 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                     if (k.isEmpty()) throw new IllegalArgumentException("--kicks needs at least one motion name, got '" + v + "'");
                     kicks = List.copyOf(k);
                 }
-                case "--ball-ahead" -> ballAhead = number(flag, v, 0, 0.5, false);
-                case "--ball-side" -> ballSide = number(flag, v, -0.2, 0.2, false);
-                case "--dive-offset" -> diveOffset = number(flag, v, 0, 2, false);
-                case "--shot-seconds" -> shotSeconds = number(flag, v, 0.1, 3, false);
-                case "--type" -> {
-                    List<Integer> t = new ArrayList<>();
-                    for (String s : v.split(",")) {
-                        int n = (int) number(flag, s.strip(), 0, 4, true);
-                        if (t.contains(n)) throw new IllegalArgumentException("--type lists " + n + " twice");
-                        t.add(n);
-                    }
-                    types = List.copyOf(t);
-                }
+                case "--ball-ahead" -> ballAhead = BenchFlags.number(flag, v, 0, 0.5, false);
+                case "--ball-side" -> ballSide = BenchFlags.number(flag, v, -0.2, 0.2, false);
+                case "--dive-offset" -> diveOffset = BenchFlags.number(flag, v, 0, 2, false);
+                case "--shot-seconds" -> shotSeconds = BenchFlags.number(flag, v, 0.1, 3, false);
+                case "--type" -> types = BenchFlags.types(flag, v);
                 default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
             }
         }
@@ -96,18 +88,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
 
     public boolean runs(String what) { return only == null || only.equals(what); }
 
-    private static int port(String flag, String v) { return (int) number(flag, v, 1, 65535, true); }
+    private static int port(String flag, String v) { return (int) BenchFlags.number(flag, v, 1, 65535, true); }
 
-    private static double number(String flag, String v, double min, double max, boolean whole) {
-        double d;
-        try {
-            d = whole ? Integer.parseInt(v) : Double.parseDouble(v);
-        } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(flag + " needs " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
-        }
-        if (!(d >= min && d <= max)) throw new IllegalArgumentException(flag + " must be in [" + fmt(min) + ", " + fmt(max) + "], got " + v);
-        return d;
-    }
 
-    private static String fmt(double d) { return d == Math.rint(d) ? String.valueOf((long) d) : String.valueOf(d); }
 }

@@ -1,5 +1,7 @@
 package phalanx.motion.walk;
 
+import phalanx.motion.bench.BenchFlags;
+
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -39,22 +41,14 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
             String v = args[++i];
             switch (flag) {
                 case "--host" -> host = v;
-                case "--port" -> port = (int) number(flag, v, 1, 65535, true);
-                case "--monitor-port" -> monitorPort = (int) number(flag, v, 1, 65535, true);
-                case "--rounds" -> rounds = (int) number(flag, v, 1, 20, true);
-                case "--starts" -> starts = (int) number(flag, v, 1, 10, true);
-                case "--search-seconds" -> searchSeconds = number(flag, v, 2, 600, false);
-                case "--turn-seconds" -> turnSeconds = number(flag, v, 1, 600, false);
-                case "--side-seconds" -> sideSeconds = number(flag, v, 1, 600, false);
-                case "--type" -> {
-                    List<Integer> t = new ArrayList<>();
-                    for (String s : v.split(",")) {
-                        int n = (int) number(flag, s.strip(), 0, 4, true);
-                        if (t.contains(n)) throw new IllegalArgumentException("--type lists " + n + " twice");
-                        t.add(n);
-                    }
-                    types = List.copyOf(t);
-                }
+                case "--port" -> port = (int) BenchFlags.number(flag, v, 1, 65535, true);
+                case "--monitor-port" -> monitorPort = (int) BenchFlags.number(flag, v, 1, 65535, true);
+                case "--rounds" -> rounds = (int) BenchFlags.number(flag, v, 1, 20, true);
+                case "--starts" -> starts = (int) BenchFlags.number(flag, v, 1, 10, true);
+                case "--search-seconds" -> searchSeconds = BenchFlags.number(flag, v, 2, 600, false);
+                case "--turn-seconds" -> turnSeconds = BenchFlags.number(flag, v, 1, 600, false);
+                case "--side-seconds" -> sideSeconds = BenchFlags.number(flag, v, 1, 600, false);
+                case "--type" -> types = BenchFlags.types(flag, v);
                 case "--scenarios" -> {
                     List<String> s = new ArrayList<>();
                     for (String name : v.split(",")) {
@@ -88,19 +82,9 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
             if (k <= 0 || k == p.length() - 1) throw new IllegalArgumentException(flag + " needs field" + sep + "number pairs, got '" + p + "'");
             String field = p.substring(0, k).strip();
             if (!WalkConfig.FIELDS.contains(field)) throw new IllegalArgumentException(flag + ": walk config has no field '" + field + "'");
-            double d = number(flag + " " + field, p.substring(k + 1).strip(), positive ? 1e-9 : -1e9, 1e9, false);
+            double d = BenchFlags.number(flag + " " + field, p.substring(k + 1).strip(), positive ? 1e-9 : -1e9, 1e9, false);
             into.put(field, d);
         }
     }
 
-    private static double number(String flag, String v, double min, double max, boolean whole) {
-        double d;
-        try {
-            d = whole ? Integer.parseInt(v) : Double.parseDouble(v);
-        } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(flag + " needs " + (whole ? "a whole number" : "a number") + ", got '" + v + "'");
-        }
-        if (!(d >= min && d <= max)) throw new IllegalArgumentException(flag + " must be in [" + min + ", " + max + "], got " + v);
-        return d;
-    }
 }
