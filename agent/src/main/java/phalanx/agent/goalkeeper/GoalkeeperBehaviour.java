@@ -26,7 +26,8 @@ public final class GoalkeeperBehaviour {
     private final AgentConfig config;
     private final Goalkeeper keeper;
     private final StandUp standUp;
-    private String lastPhase = "";
+    private Goalkeeper.State lastState;
+    private FallState lastFall;
 
     public GoalkeeperBehaviour(AgentConfig config) {
         this.config = config;
@@ -43,9 +44,10 @@ public final class GoalkeeperBehaviour {
     /** One log line whenever the keeper's state or fall state changes: what a match review needs (rare events). */
     private void logPhase(Situation s) {
         FallState f = Facts.fall(s);
-        String phase = keeper.state() + (f == FallState.STANDING ? "" : " " + f);
-        if (phase.equals(lastPhase)) return;
-        lastPhase = phase;
+        if (keeper.state() == lastState && f == lastFall) return;     // no string built in an ordinary cycle
+        lastState = keeper.state();
+        lastFall = f;
+        String phase = lastState + (f == FallState.STANDING ? "" : " " + f);
         Pose2 self = Facts.self(s, config);
         Vector2 ball = Facts.ballGlobal(s, config);
         LOG.info(String.format(Locale.ROOT, "keeper %s at game time %.2f self=%s ball=%s", phase, s.gameTime(),
