@@ -110,7 +110,10 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          request on types 0, 2 and 4
      *                          (`scripts/motion-bench --only dive`, motion/README.md "Dives")
      * @param postMargin        Threshold_Left/Right = goal half width + this (5.13; the margin is ours)
-     * @param bodyBlock         a ball crossing closer than this to the keeper's centre is left to the body (ours)
+     * @param bodyBlock         a ball crossing closer than this to the keeper's centre is left to the body (ours:
+     *                          the feet reach 0.095 m out, the hip's 0.055 m (NaoDimensions) and half
+     *                          the 0.08 m foot, plus the ball's 0.042 m radius; 0.08 m
+     *                          before, and the keeper dived away from balls rolling at its feet in the 6.3 test)
      * @param ballDecay         rolling ball velocity decay rate, 1/s: v(t) = v0·e^(−k·t) (ours: 1.053
      *                          derived from SimSpark's ball.rsg drag, 1.062 measured by scripts/ball-decay)
      * @param minApproachSpeed  slower balls are not dived for (ours; tracker noise on a still ball)
@@ -120,6 +123,13 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param liberoExitMargin  the ball is cleared when this far outside the goal area (ours)
      * @param liberoMaxSpeed    Libero only for a ball slower than this (ours: a shot rolling through
      *                          the goal area is Guard's business)
+     * @param shotSpeed         with an opponent near the ball only a ball this fast is a shot worth a dive (ours:
+     *                          in the 6.3 test FC Portugal's attackers walked the ball up to the keeper, it dived
+     *                          for the push and lay there while the kick went in; docs/matches.md)
+     * @param dribbleDistance   "near the ball" for shotSpeed (ours)
+     * @param maxShift          Guard stands on the line from the goal's centre to the ball, at most this far
+     *                          sideways from the spot (ours; the thesis's keeper keeps the middle)
+     * @param shiftTolerance    Guard side-steps when this far off that line, and stops at a third of it (ours)
      * @param libero            whether Guard goes Libero at all (5.13: yes). Off by default while every kick
      *                          ends with the robot on the ground (motion/README.md): in the 6.3 test against
      *                          FC Portugal each Libero clearance left the keeper lying in front of an open goal
@@ -127,10 +137,13 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      */
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,
-                         double liberoExitMargin, double liberoMaxSpeed, boolean libero) {
-        public static final Keeper DEFAULT = new Keeper(0.5, 0.7, 0.15, 0.08, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0, false);
-        /** The thesis's keeper: Libero on. */
-        public static final Keeper THESIS = new Keeper(0.5, 0.7, 0.15, 0.08, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0, true);
+                         double liberoExitMargin, double liberoMaxSpeed, double shotSpeed, double dribbleDistance,
+                         double maxShift, double shiftTolerance, boolean libero) {
+        public static final Keeper DEFAULT = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
+                1.0, 0.6, 0.5, 0.15, false);
+        /** The thesis's keeper: Libero on, the middle of the goal, a dive for any approaching ball. */
+        public static final Keeper THESIS = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
+                0.2, 0.6, 0.0, 0.15, true);
     }
 
     /**

@@ -21,14 +21,17 @@ import java.util.List;
  * The goalkeeper's own behaviour, the finite state machine of thesis 5.13 (Figure 5.14):
  * <pre>
  * LOCALIZE  walk to the guard spot between the posts, facing the field      -> GUARD when there
- * GUARD     track the moving ball; dive when it will cross the goal mouth    -> DIVING
+ * GUARD     track the moving ball, stand on its line to the goal's centre;
+ *           dive when it will cross the goal mouth                           -> DIVING
  *           within the dive time; ball (still) in the goal area, nobody near -> LIBERO
  *           pushed off the spot (and no shot coming)                         -> LOCALIZE
  * LIBERO    On Ball: clear the ball out of the goal area                     -> LOCALIZE when cleared or lost
  * DIVING    the dive plays to its end (the behaviour stands up afterwards)   -> LOCALIZE
  * </pre>
  * Ours beyond the thesis: a shot is also dived for in LOCALIZE and LIBERO while near the spot;
- * Libero waits for a (nearly) still ball; DIVING is a state of its own so nothing interrupts the dive.
+ * Libero waits for a (nearly) still ball; DIVING is a state of its own so nothing interrupts the dive;
+ * a ball pushed along by a nearby opponent is not dived for unless it is shot (AgentConfig.Keeper.shotSpeed);
+ * Guard side-steps to keep on the line from the goal's centre to the ball (AgentConfig.Keeper.maxShift).
  */
 public final class Goalkeeper implements Action {
     public enum State { LOCALIZE, GUARD, LIBERO, DIVING }
@@ -39,6 +42,7 @@ public final class Goalkeeper implements Action {
     private WalkToCoordinate toSpot;
     private OnBall libero;
     private State state = State.LOCALIZE;
+    private boolean shifting;
 
     public Goalkeeper(AgentConfig config) {
         this.config = config;
@@ -87,9 +91,30 @@ public final class Goalkeeper implements Action {
         }
         if (!nearSpot(s)) {
             state = State.LOCALIZE;
+            shifting = false;
             return walkToSpot(s).decide(s);
         }
-        return Decision.of(Move.STAND, track.head(s));
+        return Decision.of(shift(s), track.head(s));
+    }
+
+    /**
+     * Guard's footwork: a side step toward the point of the spot's line (x = spot) that lies between the
+     * goal's centre and the ball, at most maxShift from the middle; stand once within a third of the
+     * tolerance of it (hysteresis, so the keeper does not dither).
+     */
+    private Move shift(Situation s) {
+        AgentConfig.Keeper k = config.keeper();
+        Pose2 self = Facts.self(s, config);
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (self == null || ball == null || s.field() == null || k.maxShift() <= 0) { shifting = false; return Move.STAND; }
+        double goalX = -s.field().halfLength();
+        double depth = ball.x() - goalX;
+        double y = depth <= k.spotOffset() ? Math.signum(ball.y()) * k.maxShift() : ball.y() * k.spotOffset() / depth;
+        y = Math.max(-k.maxShift(), Math.min(k.maxShift(), y));
+        double side = self.toRelative(new Vector2(goalX + k.spotOffset(), y)).y();   // + = to the keeper's left
+        double limit = shifting ? k.shiftTolerance() / 3 : k.shiftTolerance();
+        shifting = Math.abs(side) > limit;
+        return shifting ? new Move.SideStep(side > 0) : Move.STAND;
     }
 
     private Decision libero(Situation s) {
@@ -135,6 +160,7 @@ public final class Goalkeeper implements Action {
         Vector2 v = track.relativeVelocity(s);
         AgentConfig.Keeper k = config.keeper();
         if (ball == null || v == null || v.norm() < k.minApproachSpeed()) return null;
+        if (v.norm() < k.shotSpeed() && opponentNearBall(s)) return null;     // pushed along, not shot: the body blocks
         BallRoll.Crossing c = BallRoll.crossing(ball, v, k.ballDecay());
         if (c == null || c.seconds() > k.diveSeconds()) return null;
         if (!insideThresholds(s, c.lateral()) || Math.abs(c.lateral()) <= k.bodyBlock()) return null;
@@ -160,11 +186,20 @@ public final class Goalkeeper implements Action {
         return !anyoneNear(b.teammates(), b.time(), ball) && !anyoneNear(b.opponents(), b.time(), ball);
     }
 
+    private boolean opponentNearBall(Situation s) {
+        Vector2 ball = Facts.ballGlobal(s, config);
+        return ball != null && anyoneNear(s.belief().opponents(), s.belief().time(), ball, config.keeper().dribbleDistance());
+    }
+
     private boolean anyoneNear(List<PlayerBelief> players, double now, Vector2 ball) {
+        return anyoneNear(players, now, ball, config.keeper().liberoClearance());
+    }
+
+    private boolean anyoneNear(List<PlayerBelief> players, double now, Vector2 ball, double radius) {
         if (players == null) return false;
         for (PlayerBelief p : players) {
             if (p == null || p.global() == null || !(now - p.time() <= config.beliefs().playerMemorySeconds())) continue;
-            if (p.global().distanceTo(ball) <= config.keeper().liberoClearance()) return true;
+            if (p.global().distanceTo(ball) <= radius) return true;
         }
         return false;
     }

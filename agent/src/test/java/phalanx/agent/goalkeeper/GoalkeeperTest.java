@@ -46,13 +46,49 @@ class GoalkeeperTest {
         assertNoDive(shot(3, 0.5, -6, 0));
         // ... but 2.5 m out at 6 m/s it is t = -ln(1 - 1.06 * 2.5 / 6) / 1.06 = 0.55 s: dive.
         assertEquals(new Move.Dive(true), guarding().decide(shot(2.5, 0.5, -6, 0).situation()).move());
-        // Straight at the body (|y| <= 0.08 m): the body blocks it.
+        // Straight at the body (|y| <= 0.14 m: the feet reach 0.095 m, the ball's radius is 0.042 m): the body blocks it.
         assertNoDive(shot(1, 0.05, -3, 0));
+        assertNoDive(shot(1, 0.13, -3, 0));
         // Rolling away.
         assertNoDive(shot(1, 0.4, 3, 0));
         // Without a self pose the ball's velocity cannot be put in the body frame: no dive.
         World lost = World.lost().ballRel(1, 0.4).ballVelocity(-3, 0.2);
         assertNoDive(lost);
+    }
+
+    @Test
+    void aBallPushedAlongByAnOpponentIsNoShot() {
+        // 0.35 m out, 0.4 m left, rolling in at 0.8 m/s: e^(-kt) = 1 - 1.06 * 0.35 / 0.8 = 0.536, t = 0.59 s <= 0.7 s.
+        World alone = shot(0.35, 0.4, -0.8, 0);
+        assertEquals(new Move.Dive(true), guarding().decide(alone.situation()).move(), "nobody near: a dive");
+        // The same ball with an opponent 0.3 m behind it (within 0.6 m): walked into the keeper, not shot.
+        assertNoDive(shot(0.35, 0.4, -0.8, 0).opponentAt(9, -14.5 + 0.65, 0.4));
+        // Shot at 3 m/s with the kicker still next to it: a dive.
+        World kicked = shot(1, 0.4, -3, 0).opponentAt(9, -14.5 + 1.3, 0.4);
+        assertEquals(new Move.Dive(true), guarding().decide(kicked.situation()).move());
+        // An opponent 1 m from the ball does not count.
+        World far = shot(0.35, 0.4, -0.8, 0).opponentAt(9, -14.5 + 1.35, 0.4);
+        assertEquals(new Move.Dive(true), guarding().decide(far.situation()).move());
+    }
+
+    @Test
+    void guardSideStepsOntoTheLineFromTheGoalsCentreToTheBall() {
+        // Ball at (-12, -2): the line from the goal's centre (-15, 0) crosses x = -14.5 at y = -2 * 0.5 / 3 = -0.33,
+        // more than 0.15 m to the keeper's right: side-step right.
+        Goalkeeper k = guarding();
+        assertEquals(new Move.SideStep(false), k.decide(World.at(-14.5, 0, 0).ballAt(-12, -2).situation()).move());
+        // At y = -0.25 it is 0.08 m off: still stepping (it stops within 0.05 m) ...
+        assertEquals(new Move.SideStep(false), k.decide(World.at(-14.5, -0.25, 0).ballAt(-12, -2).situation()).move());
+        // ... and at -0.30 it stands; 0.10 m off (under the 0.15 m to start) it stays standing.
+        assertEquals(Move.STAND, k.decide(World.at(-14.5, -0.30, 0).ballAt(-12, -2).situation()).move());
+        assertEquals(Move.STAND, k.decide(World.at(-14.5, -0.23, 0).ballAt(-12, -2).situation()).move());
+        // A ball far out on the wing: at most 0.5 m from the middle; the ball on the goal line beside the post too.
+        assertEquals(new Move.SideStep(true), guarding().decide(World.at(-14.5, 0, 0).ballAt(-14.8, 3).situation()).move());
+        Goalkeeper g = guarding();
+        assertEquals(Move.STAND, g.decide(World.at(-14.5, 0.45, 0).ballAt(-10, 8).situation()).move(), "0.5 m cap");
+        // The thesis's keeper keeps the middle.
+        Goalkeeper t = guarding(C.withKeeper(AgentConfig.Keeper.THESIS));
+        assertEquals(Move.STAND, t.decide(World.at(-14.5, 0, 0).ballAt(-12, -2).situation()).move());
     }
 
     private static void assertNoDive(World w) {
