@@ -21,11 +21,14 @@ import java.util.stream.Stream;
 public final class KeeperTest {
     static final String USAGE = """
             usage: scripts/keeper-test --attacker NAME='COMMAND' [--conditions none,still,keeper] [--games N]
-                                       [--out DIR] [match options]
+                                       [--restarts N] [--out DIR] [match options]
                    scripts/keeper-test --report DIR
               COMMAND as for scripts/match ({host} {port} {dir}): a team that attacks (FC Portugal; the UT Austin
               Villa base code only plays its demo circle). Each condition is played N times (default 1),
               one half of 300 s unless --halves/--half-time say otherwise.
+              --restarts N a game that never kicked off (FC Portugal's sync start stalls the server about 2 times
+                           in 9, docs/matches.md) is set aside as <condition>-NN.stallK and played again, up to
+                           N times (default 2)
               --out DIR    results (<condition>-NN.json), match logs, table.md (default /tmp/phalanx-keeper/<time>)
             """ + MatchOptions.HELP;
 
@@ -49,7 +52,7 @@ public final class KeeperTest {
 
     public static void main(String[] argv) {
         try {
-            Set<String> own = Set.of("attacker", "conditions", "games", "out", "report");
+            Set<String> own = Set.of("attacker", "conditions", "games", "restarts", "out", "report");
             Args a = MatchOptions.parse(argv, USAGE, "keeper-test", own, Set.of());
             if (a.get("report", null) != null) {
                 System.out.print(report(Path.of(a.get("report", null))));
@@ -60,6 +63,7 @@ public final class KeeperTest {
             TeamCommand attacker = TeamCommand.parse(spec);
             List<Condition> conditions = conditions(a.get("conditions", "none,still,keeper"));
             int games = a.integer("games", 1, 1, 100);
+            int restarts = a.integer("restarts", 2, 0, 10);
             Path out = Path.of(a.get("out", "/tmp/phalanx-keeper/" + MatchOptions.stamp()));
             Files.createDirectories(out);
             List<String> args = new ArrayList<>(List.of(argv));
@@ -76,11 +80,17 @@ public final class KeeperTest {
             for (Condition c : conditions) {
                 for (int g = 1; g <= games; g++) {
                     String tag = String.format(Locale.ROOT, "%s-%02d", c.name(), g);
-                    MatchConfig cfg = MatchOptions.config(match, c.team(), attacker, out.resolve(tag), out.resolve(tag + ".json"));
-                    MatchRunner runner = new MatchRunner(cfg, System.out);
-                    synchronized (current) { current[0] = runner; }
-                    MatchResult r = runner.run();
-                    System.out.println(Tournament.progressLine(g, games, r));
+                    for (int attempt = 1; ; attempt++) {
+                        MatchConfig cfg = MatchOptions.config(match, c.team(), attacker, out.resolve(tag), out.resolve(tag + ".json"));
+                        MatchRunner runner = new MatchRunner(cfg, System.out);
+                        synchronized (current) { current[0] = runner; }
+                        MatchResult r = runner.run();
+                        System.out.println(Tournament.progressLine(g, games, r));
+                        if (!neverKickedOff(r) || attempt > restarts) break;
+                        setAside(out, tag, attempt);
+                        System.out.println("keeper-test: " + tag + " never kicked off; set aside as " + tag + ".stall" + attempt
+                                + ", playing it again (" + attempt + " of " + restarts + ")");
+                    }
                 }
             }
             System.out.print(report(out));
@@ -91,6 +101,19 @@ public final class KeeperTest {
         } catch (IOException e) {
             System.err.println("keeper-test: " + e.getMessage());
             System.exit(1);
+        }
+    }
+
+    /** A game that ended before its first kick-off: the start failed, the keeper was never tested. */
+    static boolean neverKickedOff(MatchResult r) {
+        return !r.completed() && !(r.gameTime() > 0);
+    }
+
+    /** Renames a failed start's result and logs out of the report's way ({@code <tag>.stallK[.json]}). */
+    static void setAside(Path out, String tag, int attempt) throws IOException {
+        for (String suffix : List.of(".json", "")) {
+            Path p = out.resolve(tag + suffix);
+            if (Files.exists(p)) Files.move(p, out.resolve(tag + ".stall" + attempt + suffix));
         }
     }
 
