@@ -14,6 +14,9 @@ import phalanx.localization.fall.FallState;
 import phalanx.localization.field.Pose2;
 import phalanx.localization.field.Vector2;
 
+import java.util.Locale;
+import java.util.logging.Logger;
+
 /**
  * A field player's decisions each cycle. Stand Up comes first whenever the robot is down (and it
  * waits while it is only falling). Otherwise it runs the coordinator's last order (thesis 5.3:
@@ -33,12 +36,16 @@ import phalanx.localization.field.Vector2;
  * state machine survives the coordinator repeating the order every round.
  */
 public final class FieldPlayerBehaviour {
+    private static final Logger LOG = Logger.getLogger(FieldPlayerBehaviour.class.getName());
     private final AgentConfig config;
     private final StandUp standUp;
     private phalanx.comm.team.Action order;
     private ActionId runningId;
     private boolean runningOwn;
     private Action running;
+    private Action lastAction;
+    private Object lastPhase;
+    private boolean lastOrdered;
 
     public FieldPlayerBehaviour(AgentConfig config) {
         this.config = config;
@@ -71,7 +78,25 @@ public final class FieldPlayerBehaviour {
             running = ownChoice(s, home);
             runningOwn = true;
         }
-        return running.decide(s);
+        Decision d = running.decide(s);
+        logPhase(s);
+        return d;
+    }
+
+    /**
+     * One log line when the action (or On Ball's state) changes, with who chose it: what a match review
+     * needs to see why a player near the ball did not kick it. Nothing is built in an ordinary cycle.
+     */
+    private void logPhase(Situation s) {
+        Object phase = running instanceof OnBall o ? o.state() : null;
+        if (running == lastAction && phase == lastPhase && runningOwn != lastOrdered) return;
+        lastAction = running;
+        lastPhase = phase;
+        lastOrdered = !runningOwn;
+        Vector2 ball = Facts.ball(s, config);
+        LOG.info(String.format(Locale.ROOT, "action %s%s (%s) at game time %.2f ball=%s", running.getClass().getSimpleName(),
+                phase == null ? "" : " " + phase, runningOwn ? "own" : "ordered", s.gameTime(),
+                ball == null ? "?" : String.format(Locale.ROOT, "(%.2f,%.2f)", ball.x(), ball.y())));
     }
 
     /** The instance for an order: the running one when the id is unchanged, retargeted. */
