@@ -78,17 +78,24 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param alignMaxDeg       ... and this (ours)
      * @param strongBeyond      the strong kick beyond this distance to the opponent goal (ours)
      * @param oneShotTimeout    a kick or dive that never shows as played ends after this (ours; a missing motion file)
+     * @param dribbleWithin     in PlayOn, On Ball dribbles toward the goal instead of kicking while the ball is
+     *                          nearer the opponent goal than this (ours; 0 = always kick, the thesis's Figure 4.14)
      */
     public record Kick(double spotX, double spotY, double toleranceX, double toleranceY, double restartDistance,
                        double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
-                       double oneShotTimeout) {
-        public static final Kick DEFAULT = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0);
+                       double oneShotTimeout, double dribbleWithin) {
+        public static final Kick DEFAULT = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
 
         /**
          * Type 4 (toes): strong_kick.xml moves the ball 1.1 m median against 3.45 m for kick.xml
          * (motion/README.md "Kicks"), so that type never uses the strong kick.
          */
-        public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, Double.POSITIVE_INFINITY, 4.0);
+        public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, Double.POSITIVE_INFINITY, 4.0, 0);
+
+        public Kick withDribbleWithin(double metres) {
+            return new Kick(spotX, spotY, toleranceX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
+                    strongBeyond, oneShotTimeout, metres);
+        }
     }
 
     /**
@@ -164,6 +171,8 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
             throw new IllegalArgumentException("every part of the agent config is required");
         }
     }
+
+    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback); }
 
     public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback); }
 

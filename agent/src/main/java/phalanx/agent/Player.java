@@ -110,13 +110,13 @@ public final class Player {
     private static PlayerParts.Role role(PlayerOptions o, FieldSpec field, BeliefStore beliefs, ChannelConfig channel,
                                          TeamKey key, int unum, PlayerParts self) {
         if (unum == channel.coordinator()) {
-            GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(AgentConfig.forRobotType(o.robotType())));
+            GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(config(o)));
             TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,
                     self::playMode, keeper::hasBall);
             return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
         }
         return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum),
-                new FieldBrain(new FieldPlayerBehaviour(AgentConfig.forRobotType(o.robotType())), unum, o.players(), CoordinationConfig.THESIS));
+                new FieldBrain(new FieldPlayerBehaviour(config(o)), unum, o.players(), CoordinationConfig.THESIS));
     }
 
     /**
@@ -130,6 +130,12 @@ public final class Player {
             LOG.warning(e.getMessage() + "; using a key derived from the team name instead");
             return TeamKey.fromSecret("phalanx-team-key-" + team);
         }
+    }
+
+    /** The robot type's config with the command line's choices applied. */
+    static AgentConfig config(PlayerOptions o) {
+        AgentConfig c = AgentConfig.forRobotType(o.robotType());
+        return c.withKick(c.kick().withDribbleWithin(o.dribbleWithin()));
     }
 
     private static boolean openLog(PlayerOptions o) {

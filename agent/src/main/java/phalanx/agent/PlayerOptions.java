@@ -5,7 +5,8 @@ import java.nio.file.Paths;
 
 /** The player's command line (issue 8). {@link #parse} names the flag at fault. */
 public record PlayerOptions(String host, int port, String team, int unum, int players, int robotType,
-                            Path logDir, long connectTimeoutMillis, Path motions, String roboviz, boolean still) {
+                            Path logDir, long connectTimeoutMillis, Path motions, String roboviz, boolean still,
+                            int dribbleWithin) {
 
     public static final String USAGE = """
             usage: phalanx-player [--host H] [--port P] [--team NAME] [--unum N] [--players 9|11] [--type T] [--log-dir DIR]
@@ -20,10 +21,12 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
               --motions DIR  the motion files (default: motions/ in the working directory)
               --roboviz H[:P]  draw beliefs into RoboViz at H (port 32769 by default); off by default
               --behaviour B  play (default) or still: beam, stand and do nothing else (the "empty"
-                             goalkeeper of the thesis's test 6.3)""";
+                             goalkeeper of the thesis's test 6.3)
+              --dribble-within M  in PlayOn, dribble toward the goal instead of kicking while the ball is
+                             nearer than M metres to it (default 0: always kick, the thesis; 100: always dribble)""";
 
     public static PlayerOptions defaults() {
-        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false);
+        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false, 0);
     }
 
     /** Parses flags; throws IllegalArgumentException whose message names the bad flag and value. */
@@ -36,6 +39,7 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
         Path motions = o.motions;
         String roboviz = null;
         boolean still = false;
+        int dribbleWithin = o.dribbleWithin;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("-h") || flag.equals("--help")) throw new IllegalArgumentException("help");
@@ -60,11 +64,12 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                     if (!v.equals("play") && !v.equals("still")) throw new IllegalArgumentException("--behaviour must be play or still, got '" + v + "'");
                     still = v.equals("still");
                 }
+                case "--dribble-within" -> dribbleWithin = intIn(flag, v, 0, 100);
                 default -> throw new IllegalArgumentException("unknown flag " + flag);
             }
         }
         if (unum > players) throw new IllegalArgumentException("--unum " + unum + " is more than --players " + players);
-        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz, still);
+        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz, still, dribbleWithin);
     }
 
     private static int intIn(String flag, String v, int min, int max) {

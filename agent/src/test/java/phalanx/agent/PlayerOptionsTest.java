@@ -12,6 +12,8 @@ class PlayerOptionsTest {
         assertEquals("127.0.0.1", d.host());
         assertEquals(3100, d.port());
         assertEquals(11, d.players());
+        assertEquals(0, d.dribbleWithin(), "the thesis: always kick");
+        assertEquals(100.0, Player.config(PlayerOptions.parse("--dribble-within", "100")).kick().dribbleWithin());
         PlayerOptions o = PlayerOptions.parse("--host", "localhost", "--port", "3300", "--team", "Kouretes",
                 "--unum", "7", "--players", "9", "--type", "4", "--log-dir", "/tmp/x");
         assertEquals(3300, o.port());
@@ -28,6 +30,7 @@ class PlayerOptionsTest {
         assertBad("--unum must be 0-11, got 12", "--unum", "12");
         assertBad("--players must be 9 or 11, got 10", "--players", "10");
         assertBad("--type must be 0-4, got 5", "--type", "5");
+        assertBad("--dribble-within must be 0-100, got 101", "--dribble-within", "101");
         assertBad("--team must be", "--team", "two words");
         assertBad("unknown flag --speed", "--speed", "3");
         assertBad("--host needs a value", "--host");

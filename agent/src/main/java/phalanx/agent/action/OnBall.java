@@ -4,6 +4,7 @@ import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Situation;
+import phalanx.comm.perception.PlayMode;
 import phalanx.localization.field.Pose2;
 import phalanx.localization.field.Vector2;
 
@@ -11,10 +12,13 @@ import phalanx.localization.field.Vector2;
  * 4.6.2 On Ball, the state machine of Figure 4.14: Walk To Ball, Find Opponent's Goal, align with
  * the goal (the tolerance grows with the distance to the goal: far away the ball only needs to
  * leave our half), Prepare For Kick, kick (the strong kick far from the goal). Whenever the ball is
- * lost or taken away it starts again from Walk To Ball.
+ * lost or taken away it starts again from Walk To Ball. Ours: in PlayOn, with the ball nearer the
+ * opponent goal than {@code AgentConfig.Kick.dribbleWithin}, the aligned player dribbles toward the
+ * goal (Dribble Ball To Direction) instead of preparing a kick; set pieces are always kicked, since
+ * a dribble touches the ball twice (docs/protocol.md, "Set pieces").
  */
 public final class OnBall implements Action {
-    public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK }
+    public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK, DRIBBLE }
 
     private final AgentConfig config;
     private final WalkToBall walk;
@@ -22,6 +26,7 @@ public final class OnBall implements Action {
     private final Orbit orbit;
     private final PrepareForKick prepare;
     private final KickBall kick;
+    private final DribbleBallToDirection dribble;
     private State state = State.WALK_TO_BALL;
     private int kicks;
     private boolean justKicked;
@@ -33,6 +38,7 @@ public final class OnBall implements Action {
         this.orbit = new Orbit(config);
         this.prepare = new PrepareForKick(config);
         this.kick = new KickBall(config);
+        this.dribble = new DribbleBallToDirection(config, 0);
     }
 
     public State state() { return state; }
@@ -60,7 +66,13 @@ public final class OnBall implements Action {
                     double e = goalError(s);
                     if (Double.isNaN(e)) { state = State.FIND_GOAL; return find.decide(s); }
                     if (Math.abs(e) > tolerance(s)) return orbit.step(s, ball, e);
-                    state = State.PREPARE;
+                    state = dribbles(s) ? State.DRIBBLE : State.PREPARE;
+                }
+                case DRIBBLE -> {
+                    double toGoal = goalDirection(s);
+                    if (!dribbles(s) || Double.isNaN(toGoal)) { state = State.ALIGN; continue; }
+                    dribble.direction(toGoal);
+                    return dribble.decide(s);
                 }
                 case PREPARE -> {
                     double e = goalError(s);
@@ -87,6 +99,18 @@ public final class OnBall implements Action {
     /** True in the cycle a kick has just ended. */
     @Override
     public boolean done(Situation s) { return justKicked; }
+
+    /** Dribble rather than kick: PlayOn, and the ball within dribbleWithin of the opponent goal. */
+    private boolean dribbles(Situation s) {
+        double d = distanceToGoal(s);
+        return s.playMode() == PlayMode.PLAY_ON && !Double.isNaN(d) && d < config.kick().dribbleWithin();
+    }
+
+    /** Field-frame direction from the ball to the opponent goal's centre, degrees; NaN without a ball or field. */
+    private double goalDirection(Situation s) {
+        Vector2 from = Facts.ballGlobal(s, config);
+        return from == null || s.field() == null ? Double.NaN : s.field().opponentGoal().minus(from).angleDeg();
+    }
 
     /** No ball, or (once at the ball) the ball got away: start again. */
     private boolean lost(Vector2 ball) {

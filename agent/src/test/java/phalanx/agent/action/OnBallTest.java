@@ -51,6 +51,37 @@ class OnBallTest {
     }
 
     @Test
+    void dribblesTowardTheGoalInsteadOfKickingWithinDribbleWithin() {
+        AgentConfig dribbling = C.withKick(C.kick().withDribbleWithin(20));
+        // At (0, 0) facing the goal (15 m away), ball 0.25 m ahead: aligned, so dribble: walk on, leaning toward
+        // the goal seen from the ball (atan2(0.055, 14.75) = 0.2136°, / 7°) and the ball's side (-0.055 / 0.1).
+        OnBall a = new OnBall(dribbling);
+        Move m = a.decide(World.at(0, 0, 0).ballRel(0.25, -0.055).situation()).move();
+        assertEquals(OnBall.State.DRIBBLE, a.state());
+        assertTrue(m instanceof Move.Walk w && !w.slow() && Math.abs(w.lean() - (0.2136 / 7 - 0.55)) < 1e-4, m.toString());
+        // Standing at (0, 3) facing +x: the goal (15, 0) lies at -11.3° from the ball, more than twice 7°: go round it.
+        OnBall b = new OnBall(dribbling.withKick(dribbling.kick()));
+        b.decide(World.at(0, 3, -5).ballRel(0.25, 0).situation());
+        assertEquals(OnBall.State.DRIBBLE, b.state());
+        Move round = b.decide(World.at(0, 3, 5).ballRel(0.25, 0).situation()).move();
+        assertEquals(new Move.SideStep(true), round, "heading 5°, wanted -11.3°: step left to turn right round the ball");
+        // 20 m from the goal (beyond dribbleWithin): prepare a kick as before.
+        OnBall far = new OnBall(dribbling);
+        far.decide(World.at(-6, 0, 0).ballRel(0.25, -0.055).situation());
+        assertEquals(OnBall.State.PREPARE, far.state());
+        // A set piece (our kick-off) is kicked, never dribbled (the taker may touch the ball once).
+        OnBall kickOff = new OnBall(dribbling);
+        World w = World.at(0, 0, 0).ballRel(0.25, -0.055);
+        w.mode = phalanx.comm.perception.PlayMode.KICK_OFF_LEFT;
+        kickOff.decide(w.situation());
+        assertEquals(OnBall.State.PREPARE, kickOff.state());
+        // The default (the thesis) always kicks.
+        OnBall thesis = new OnBall(C);
+        thesis.decide(World.at(0, 0, 0).ballRel(0.25, -0.055).situation());
+        assertEquals(OnBall.State.PREPARE, thesis.state());
+    }
+
+    @Test
     void startsAgainWhenTheBallIsTakenAwayOrLost() {
         OnBall a = new OnBall(C);
         a.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation());
