@@ -13,7 +13,10 @@ import phalanx.localization.field.Vector2;
  * 4.6.2 Dribble Ball To Direction: Walk To Direction with the ball kept in front of the feet. Away
  * from the ball it walks to it; at the ball with the heading off by more than twice Walk To
  * Direction's 7° it goes round the ball (side steps and turns); otherwise it walks on, leaning
- * toward the heading and toward the ball so the ball stays between the feet. The thesis calls its
+ * toward the heading and toward the ball so the ball stays between the feet. A ball within Walk To
+ * Ball's stopping distance but beside or behind the feet is brought in front with a side step or a
+ * step back (Walk To Ball would only stand there: a player stood 80 s beside the ball on an empty
+ * field, docs/matches.md). The thesis calls its
  * own version "not fully functional"; so is this one until it is tuned in the server.
  */
 public final class DribbleBallToDirection implements Action {
@@ -21,6 +24,8 @@ public final class DribbleBallToDirection implements Action {
     private static final double AT_FEET_AHEAD = 0.35;
     /** ... and this to either side. */
     private static final double AT_FEET_SIDE = 0.15;
+    /** A ball nearer than this ahead (or behind) is stepped back from, not side-stepped to. */
+    private static final double BEHIND = 0.08;
     /** Lateral ball offset that gives full lean toward it. */
     private static final double FULL_LEAN_OFFSET = 0.1;
 
@@ -48,7 +53,12 @@ public final class DribbleBallToDirection implements Action {
     @Override
     public Decision decide(Situation s) {
         Vector2 ball = Facts.ball(s, config);
-        if (ball == null || !atFeet(ball)) return walk.decide(s);
+        if (ball == null) return walk.decide(s);
+        if (!atFeet(ball)) {
+            if (ball.norm() > config.walk().ballStopDistance()) return walk.decide(s);
+            if (ball.x() < BEHIND) return Decision.of(new Move.StepBack(), track.head(s));
+            return Decision.of(new Move.SideStep(ball.y() > 0), track.head(s));
+        }
         Pose2 self = Facts.self(s, config);
         if (self == null) return localize.decide(s);
         double e = Angles.difference(directionDeg, self.thetaDeg());

@@ -91,5 +91,10 @@ class WalkActionsTest {
         d.direction(40);   // wanted heading 40° left: go round the ball clockwise, i.e. step right
         assertEquals(new Move.SideStep(false), d.decide(World.at(0, 0, 0).ballRel(0.2, 0).situation()).move());
         assertTrue(d.decide(World.at(0, 0, 0).ballRel(2, 0).situation()).move() instanceof Move.Walk, "ball away: walk to it");
+        // Within the 0.28 m stopping distance but off the feet (|y| >= 0.15 m): step to it, never just stand.
+        d.direction(0);
+        assertEquals(new Move.SideStep(false), d.decide(World.at(0, 0, 0).ballRel(0.12, -0.2).situation()).move());
+        assertEquals(new Move.SideStep(true), d.decide(World.at(0, 0, 0).ballRel(0.1, 0.2).situation()).move());
+        assertEquals(new Move.StepBack(), d.decide(World.at(0, 0, 0).ballRel(0.02, 0.2).situation()).move(), "beside the heel");
     }
 }
