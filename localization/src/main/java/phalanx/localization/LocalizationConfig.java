@@ -34,6 +34,9 @@ package phalanx.localization;
  * @param fallTiltCycles       cycles in a row the accelerometer must show the tilt before it says "falling": in the
  *                             real server the omni walk's foot impacts tilt single readings past 90° (81 of 500
  *                             walking cycles over 50°, never two in a row; localization/README.md); not in the thesis
+ * @param fallStuckCycles      cycles of uninterrupted tilt after which the fall counts as confirmed even with the feet
+ *                             carrying weight (kneeling, sitting, tangled with another robot): otherwise a robot stuck
+ *                             half down stayed FALLING, which only stands and waits; not in the thesis (ours: 1 s)
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
                                  double ballAgreementMetres, PairWeighting pairWeighting, double fieldMarginMetres,
@@ -41,7 +44,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  int trackSetSize, int trackDelay,
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
-                                 int fallConfirmCycles, double fallBackMinDeg, double accSmoothing, int fallTiltCycles) {
+                                 int fallConfirmCycles, double fallBackMinDeg, double accSmoothing, int fallTiltCycles,
+                                 int fallStuckCycles) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -59,7 +63,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             0.01, 0.5, 3,
             5, 5,
             1.0, 3,
-            50, 150, 20, 5, 30, 0.05, 3);
+            50, 150, 20, 5, 30, 0.05, 3, 50);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -70,20 +74,20 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         if (!(fusionClusterMetres > 0)) throw new IllegalArgumentException("fusionClusterMetres must be positive");
         if (!(accSmoothing > 0 && accSmoothing <= 1)) throw new IllegalArgumentException("accSmoothing must be in (0, 1]");
         if (!(fallBackMinDeg >= 0 && fallBackMinDeg < 90)) throw new IllegalArgumentException("fallBackMinDeg must be in [0, 90), got " + fallBackMinDeg);
-        if (ekfResetFrames < 1 || fallConfirmCycles < 1 || fallTiltCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
+        if (ekfResetFrames < 1 || fallConfirmCycles < 1 || fallTiltCycles < 1 || fallStuckCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
     }
 
     public LocalizationConfig withFilter(Filter f) {
         return new LocalizationConfig(f, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, ekfResetFrames, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
 }

@@ -10,12 +10,13 @@ import java.util.List;
  * Thesis 4.6 Stand Up's fall detection: gyro or accelerometer beyond a threshold says "possibly
  * falling"; the fall is confirmed when the torso stays tilted and the force perceptors under the
  * feet do not carry the robot (their sole-normal forces add up to less than a threshold; a robot
- * lying on its back still touches the ground with its heels, sideways to the soles).
+ * lying on its back still touches the ground with its heels, sideways to the soles). A tilt that lasts
+ * {@code fallStuckCycles} is a fall whatever the feet say (a kneeling or sitting robot).
  * One call per cycle; no allocation.
  */
 public final class FallDetector {
     private final double cosTilt, gyroLimit, support, sinBack;
-    private final int confirmCycles, tiltCycles;
+    private final int confirmCycles, tiltCycles, stuckCycles;
     private FallState state = FallState.STANDING;
     private int downCycles, tiltedCycles;
 
@@ -25,6 +26,7 @@ public final class FallDetector {
         support = c.fallSupportNewtons();
         confirmCycles = c.fallConfirmCycles();
         tiltCycles = c.fallTiltCycles();
+        stuckCycles = c.fallStuckCycles();
         sinBack = Math.sin(Math.toRadians(c.fallBackMinDeg()));
     }
 
@@ -48,7 +50,7 @@ public final class FallDetector {
                 if (f != null && f.isFinite() && f.z() > 0) carried += f.z();
             }
         }
-        if (tilted && carried < support) {
+        if (tilted && (carried < support || tiltedCycles >= stuckCycles)) {
             if (++downCycles >= confirmCycles) {
                 // the accelerometer's y is the forward axis' share of "up": face up only if clearly positive;
                 // a side-lying robot (y near 0) gets the front get-up, which rolls it onto its front

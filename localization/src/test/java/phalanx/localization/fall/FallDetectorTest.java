@@ -67,6 +67,23 @@ class FallDetectorTest {
         assertEquals(FallState.STANDING, d.update(Scenes.UPRIGHT, Vector3.ZERO, Scenes.standingFeet()));
     }
 
+    @Test
+    void aTiltThatLastsASecondIsAFallEvenWithTheFeetLoaded() {
+        // Kneeling forward at 55° with the feet still pushing: FALLING (wait) at first, and a confirmed front fall
+        // once the tilt has lasted fallStuckCycles (50) plus the confirmation (5): cycle 54 is the 5th of the
+        // stuck count's confirmation (cycles 50..54).
+        FallDetector d = new FallDetector(LocalizationConfig.DEFAULT);
+        Vector3 kneeling = new Vector3(0, -8, 5.7);
+        int stuck = LocalizationConfig.DEFAULT.fallStuckCycles(), confirm = LocalizationConfig.DEFAULT.fallConfirmCycles();
+        for (int i = 1; i < stuck + confirm - 1; i++) {
+            FallState s = d.update(kneeling, Vector3.ZERO, Scenes.standingFeet());
+            assertEquals(i < LocalizationConfig.DEFAULT.fallTiltCycles() ? FallState.STANDING : FallState.FALLING, s, "cycle " + i);
+        }
+        assertEquals(FallState.FALLEN_FRONT, d.update(kneeling, Vector3.ZERO, Scenes.standingFeet()), "cycle " + (stuck + confirm - 1));
+        // One upright reading starts the count again.
+        assertEquals(FallState.STANDING, d.update(Scenes.UPRIGHT, Vector3.ZERO, Scenes.standingFeet()));
+    }
+
     /**
      * Our omni walk in the real server (type 0, 0.88 m/s, 10 s without a fall; recorded with
      * WALK_TRACE=1 scripts/walk-bench, file in test resources): 81 single readings tilt past 50°,
