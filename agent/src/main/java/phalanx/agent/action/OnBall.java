@@ -126,11 +126,18 @@ public final class OnBall implements Action {
         return FindOpponentGoal.goalBearingFrom(s, config, from);
     }
 
-    /** Alignment tolerance: proportional to the ball's distance to the goal, within bounds. */
+    /**
+     * Alignment tolerance: in our half proportional to the ball's distance to the goal, within bounds (4.6.2:
+     * there "we only want to clear the ball from our own half"); in the opponent's half the minimum, since a
+     * kick from there should go at the goal (on an empty field 25° from 10 m out sent the ball to the corner
+     * flag; docs/matches.md).
+     */
     double tolerance(Situation s) {
         AgentConfig.Kick k = config.kick();
         double d = distanceToGoal(s);
         if (Double.isNaN(d)) return k.alignMaxDeg();
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (ball != null && ball.x() > 0) return k.alignMinDeg();
         return Facts.clamp(k.alignDegPerMetre() * d, k.alignMinDeg(), k.alignMaxDeg());
     }
 

@@ -101,10 +101,12 @@ class OnBallTest {
     @Test
     void nearTheGoalItKicksNormallyAndAlignsMorePrecisely() {
         OnBall a = new OnBall(C);
-        // 2 m from the goal: tolerance 2.5°/m × 2 m = 5°, raised to the 10° minimum; 25 m away: 45° cap.
+        // 2 m from the goal: tolerance 2.5°/m × 2 m = 5°, raised to the 10° minimum; 25 m away: 45° cap;
+        // in our half 2.5°/m × 16.8 m = 42°; anywhere in the opponent's half (10 m out): the 10° minimum.
         assertEquals(10, a.tolerance(World.at(12.8, 0, 0).ballRel(0.2, 0).situation()), 1e-9);
         assertEquals(45, a.tolerance(World.at(-10.2, 0, 0).ballRel(0.2, 0).situation()), 1e-9);
-        assertEquals(25, a.tolerance(World.at(4.8, 0, 0).ballRel(0.2, 0).situation()), 1e-6);
+        assertEquals(42, a.tolerance(World.at(-2, 0, 0).ballRel(0.2, 0).situation()), 1e-6);
+        assertEquals(10, a.tolerance(World.at(4.8, 0, 0).ballRel(0.2, 0).situation()), 1e-6);
         // Facing 20° left of the goal 2 m away: not aligned near the goal, aligned far from it.
         // (the ball lies 18° to the right, so the orbit turns back to it first)
         Move m = a.decide(World.at(12.83, 0, 20).ballRel(0.17, -0.055).situation()).move();
