@@ -134,6 +134,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          in the 6.3 test FC Portugal's attackers walked the ball up to the keeper, it dived
      *                          for the push and lay there while the kick went in; docs/matches.md)
      * @param dribbleDistance   "near the ball" for shotSpeed (ours)
+     * @param minDiveDistance   no dive for a ball nearer than this: it is at the feet, the body is already in its way
+     *                          and a dive needs 0.7 s to cover anything (ours: in the 6.3 test the keeper dived for
+     *                          balls 0.13-0.4 m in front of it and lay beside them while they were pushed in)
      * @param maxShift          Guard stands on the line from the goal's centre to the ball, at most this far
      *                          sideways from the spot (ours; the thesis's keeper keeps the middle)
      * @param shiftTolerance    Guard side-steps when this far off that line, and stops at a third of it (ours)
@@ -145,12 +148,12 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,
                          double liberoExitMargin, double liberoMaxSpeed, double shotSpeed, double dribbleDistance,
-                         double maxShift, double shiftTolerance, boolean libero) {
+                         double minDiveDistance, double maxShift, double shiftTolerance, boolean libero) {
         public static final Keeper DEFAULT = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
-                1.0, 0.6, 0.5, 0.15, false);
+                1.0, 0.6, 0.5, 0.5, 0.15, false);
         /** The thesis's keeper: Libero on, the middle of the goal, a dive for any approaching ball. */
         public static final Keeper THESIS = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
-                0.2, 0.6, 0.0, 0.15, true);
+                0.2, 0.6, 0.0, 0.0, 0.15, true);
     }
 
     /**

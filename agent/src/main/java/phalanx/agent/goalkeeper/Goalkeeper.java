@@ -159,7 +159,7 @@ public final class Goalkeeper implements Action {
         Vector2 ball = Facts.ball(s, config);
         Vector2 v = track.relativeVelocity(s);
         AgentConfig.Keeper k = config.keeper();
-        if (ball == null || v == null || v.norm() < k.minApproachSpeed()) return null;
+        if (ball == null || v == null || v.norm() < k.minApproachSpeed() || ball.norm() < k.minDiveDistance()) return null;
         if (v.norm() < k.shotSpeed() && opponentNearBall(s)) return null;     // pushed along, not shot: the body blocks
         BallRoll.Crossing c = BallRoll.crossing(ball, v, k.ballDecay());
         if (c == null || c.seconds() > k.diveSeconds()) return null;

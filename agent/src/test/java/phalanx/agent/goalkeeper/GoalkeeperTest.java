@@ -58,7 +58,7 @@ class GoalkeeperTest {
 
     @Test
     void aBallPushedAlongByAnOpponentIsNoShot() {
-        // 0.35 m out, 0.4 m left, rolling in at 0.8 m/s: e^(-kt) = 1 - 1.06 * 0.35 / 0.8 = 0.536, t = 0.59 s <= 0.7 s.
+        // 0.35 m out, 0.4 m left (0.53 m away), rolling in at 0.8 m/s: e^(-kt) = 1 - 1.06 * 0.35 / 0.8 = 0.536, t = 0.59 s.
         World alone = shot(0.35, 0.4, -0.8, 0);
         assertEquals(new Move.Dive(true), guarding().decide(alone.situation()).move(), "nobody near: a dive");
         // The same ball with an opponent 0.3 m behind it (within 0.6 m): walked into the keeper, not shot.
@@ -69,6 +69,8 @@ class GoalkeeperTest {
         // An opponent 1 m from the ball does not count.
         World far = shot(0.35, 0.4, -0.8, 0).opponentAt(9, -14.5 + 1.35, 0.4);
         assertEquals(new Move.Dive(true), guarding().decide(far.situation()).move());
+        // A ball at the feet (0.2 m ahead, 0.3 m left: 0.36 m < 0.5 m) is never dived for, however fast.
+        assertNoDive(shot(0.2, 0.3, -3, 0.2));
     }
 
     @Test
