@@ -164,9 +164,8 @@ public final class BeliefStore {
             if (!pol.isUsable()) { stats.badPolar++; continue; }
             if (side == null) continue;
             Landmark l = Landmark.byIndex(i);
-            Vector3 rel = camera.toBody(pol);
             Vector3 at = field.landmark(l, side);
-            sightings.add(new LandmarkSighting(l, new Vector2(at.x(), at.y()), new Vector2(rel.x(), rel.y())));
+            sightings.add(new LandmarkSighting(l, new Vector2(at.x(), at.y()), camera.toGround(pol)));
         }
         if (side == null) stats.noSide++;
         else if (sightings.isEmpty()) stats.noLandmark++;
@@ -200,8 +199,7 @@ public final class BeliefStore {
         if (ball != null) {
             if (!ball.isUsable()) stats.badPolar++;
             else {
-                Vector3 r = camera.toBody(ball);
-                ballRelative = new Vector2(r.x(), r.y());
+                ballRelative = camera.toGround(ball);
                 ballTime = time;
                 if (self != null && steady) {
                     Vector2 g = self.toGlobal(ballRelative);
@@ -230,11 +228,10 @@ public final class BeliefStore {
             Polar pol = sp.parts()[i];
             if (pol == null) continue;
             if (!pol.isUsable()) { stats.badPolar++; continue; }
-            Vector3 r = camera.toBody(pol);
-            rel[i] = new Vector2(r.x(), r.y());
+            rel[i] = camera.toGround(pol);
             if (glob != null) glob[i] = self.toGlobal(rel[i]);
-            sx += r.x();
-            sy += r.y();
+            sx += rel[i].x();
+            sy += rel[i].y();
             n++;
         }
         if (n == 0) return false;

@@ -4,6 +4,7 @@ import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.JointAngles;
 import phalanx.comm.perception.Polar;
 import phalanx.comm.perception.Vector3;
+import phalanx.localization.field.Vector2;
 
 /**
  * Where the camera is and how it is turned, relative to the body at one instant, so that a polar,
@@ -73,6 +74,17 @@ public final class CameraPose {
         double cv = Math.cos(v);
         double x = p.distance() * cv * Math.cos(h), y = p.distance() * cv * Math.sin(h), z = p.distance() * Math.sin(v);
         return new Vector3(cx + m00 * x + m01 * y + m02 * z, cy + m10 * x + m11 * y + m12 * z, cz + m20 * x + m21 * y + m22 * z);
+    }
+
+    /**
+     * The x and y of {@link #toBody} (the observation on the ground plane of the level body frame)
+     * without the Vector3: the belief store places every seen landmark, ball and body part so.
+     */
+    public Vector2 toGround(Polar p) {
+        double h = Math.toRadians(p.horizontalDeg()), v = Math.toRadians(p.verticalDeg());
+        double cv = Math.cos(v);
+        double x = p.distance() * cv * Math.cos(h), y = p.distance() * cv * Math.sin(h), z = p.distance() * Math.sin(v);
+        return new Vector2(cx + m00 * x + m01 * y + m02 * z, cy + m10 * x + m11 * y + m12 * z);
     }
 
     /** Height of the torso centre above the ground (forward kinematics of the supporting leg). */
