@@ -47,7 +47,8 @@ public final class AvoidObstacles {
         if (self != null && f != null) {
             for (int sx = -1; sx <= 1; sx += 2) {
                 for (int sy = -1; sy <= 1; sy += 2) {
-                    add(out, self.toRelative(new Vector2(sx * f.halfLength(), sy * f.goalWidth() / 2)));
+                    double x = sx * f.halfLength(), y = sy * f.goalWidth() / 2;
+                    if (!surelyOutOfRange(self, x, y)) add(out, self.toRelative(new Vector2(x, y)));
                 }
             }
         }
@@ -59,9 +60,24 @@ public final class AvoidObstacles {
         for (PlayerBelief p : players) {
             if (p == null || !(now - p.time() <= config.beliefs().playerMemorySeconds())) continue;
             // A remembered player's relative vector goes stale as we walk; its own-frame position does not.
-            Vector2 rel = self != null && p.global() != null ? self.toRelative(p.global()) : p.relative();
+            Vector2 rel;
+            if (self != null && p.global() != null) {
+                if (surelyOutOfRange(self, p.global().x(), p.global().y())) continue;
+                rel = self.toRelative(p.global());
+            } else {
+                rel = p.relative();
+            }
             add(out, rel);
         }
+    }
+
+    /**
+     * True when an own-frame point lies beyond the range, with room for rounding: turning it into the
+     * body frame keeps its distance, so {@link #add} would drop it; this skips the transform (run for
+     * every player seen, every cycle).
+     */
+    private boolean surelyOutOfRange(Pose2 self, double x, double y) {
+        return Math.hypot(x - self.x(), y - self.y()) > config.obstacles().range() + 1e-6;
     }
 
     private void add(List<Vector2> out, Vector2 rel) {

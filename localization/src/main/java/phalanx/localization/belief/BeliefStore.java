@@ -237,7 +237,8 @@ public final class BeliefStore {
         if (n == 0) return false;
         Vector2 head = rel[BodyPart.HEAD.ordinal()];
         Vector2 where = head != null ? head : new Vector2(sx / n, sy / n);
-        PlayerBelief b = new PlayerBelief(sp.team(), sp.id(), time, where, self == null ? null : self.toGlobal(where), rel, glob);
+        Vector2 global = self == null ? null : head != null ? glob[BodyPart.HEAD.ordinal()] : self.toGlobal(where);
+        PlayerBelief b = new PlayerBelief(sp.team(), sp.id(), time, where, global, rel, glob);
         (mate ? mates : others)[sp.id()] = b;
         return true;
     }

@@ -73,8 +73,8 @@ public final class SelfLocalizer {
             Vector2 c = new Vector2(mx - sign * h * uy, my + sign * h * ux);
             if (!field.contains(c, config.fieldMarginMetres())) continue;
             // Body orientation that makes each landmark appear at its seen bearing.
-            double ta = Angles.normalize(pa.minus(c).angleDeg() - a.relative().angleDeg());
-            double tb = Angles.normalize(pb.minus(c).angleDeg() - b.relative().angleDeg());
+            double ta = Angles.normalize(bearingDeg(c, pa) - a.relative().angleDeg());
+            double tb = Angles.normalize(bearingDeg(c, pb) - b.relative().angleDeg());
             double err = Math.abs(Angles.difference(ta, tb));
             if (err < bestErr) {
                 bestErr = err;
@@ -84,5 +84,10 @@ public final class SelfLocalizer {
         }
         // The right candidate sees both landmarks at their seen bearings; a mirror image does not.
         return bestErr <= 20 ? best : null;
+    }
+
+    /** to.minus(from).angleDeg() without the intermediate vector (every landmark pair of every frame). */
+    private static double bearingDeg(Vector2 from, Vector2 to) {
+        return Math.toDegrees(Math.atan2(to.y() - from.y(), to.x() - from.x()));
     }
 }
