@@ -124,8 +124,12 @@ public final class BeliefStore {
         tilt.update(p.gyro(), p.acc(), dt);
 
         selfFilter.predict(odoForward, odoLeft, odoTurn);
-        if (ballRelative != null && (odoForward != 0 || odoLeft != 0 || odoTurn != 0))
-            ballRelative = ballRelative.minus(new Vector2(odoForward, odoLeft)).rotate(-odoTurn);
+        if (ballRelative != null && (odoForward != 0 || odoLeft != 0 || odoTurn != 0)) {
+            // ballRelative.minus(new Vector2(odoForward, odoLeft)).rotate(-odoTurn) in one allocation
+            double x = ballRelative.x() - odoForward, y = ballRelative.y() - odoLeft;
+            double r = Math.toRadians(-odoTurn), c = Math.cos(r), s = Math.sin(r);
+            ballRelative = new Vector2(c * x - s * y, s * x + c * y);
+        }
         odoForward = odoLeft = odoTurn = 0;
 
         if (p.hasVision()) see(p, fall);
@@ -221,7 +225,6 @@ public final class BeliefStore {
         boolean mate = teamName.equals(sp.team());
         if (mate && sp.id() == unum) return false;      // the agent sees its own lower arms
         Vector2[] rel = new Vector2[BodyPart.COUNT];
-        Vector2[] glob = self == null ? null : new Vector2[BodyPart.COUNT];
         double sx = 0, sy = 0;
         int n = 0;
         for (int i = 0; i < BodyPart.COUNT; i++) {
@@ -229,7 +232,6 @@ public final class BeliefStore {
             if (pol == null) continue;
             if (!pol.isUsable()) { stats.badPolar++; continue; }
             rel[i] = camera.toGround(pol);
-            if (glob != null) glob[i] = self.toGlobal(rel[i]);
             sx += rel[i].x();
             sy += rel[i].y();
             n++;
@@ -237,8 +239,7 @@ public final class BeliefStore {
         if (n == 0) return false;
         Vector2 head = rel[BodyPart.HEAD.ordinal()];
         Vector2 where = head != null ? head : new Vector2(sx / n, sy / n);
-        Vector2 global = self == null ? null : head != null ? glob[BodyPart.HEAD.ordinal()] : self.toGlobal(where);
-        PlayerBelief b = new PlayerBelief(sp.team(), sp.id(), time, where, global, rel, glob);
+        PlayerBelief b = new PlayerBelief(sp.team(), sp.id(), time, where, self == null ? null : self.toGlobal(where), rel, self);
         (mate ? mates : others)[sp.id()] = b;
         return true;
     }
