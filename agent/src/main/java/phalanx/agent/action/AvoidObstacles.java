@@ -57,7 +57,8 @@ public final class AvoidObstacles {
 
     private void addPlayers(List<Vector2> out, List<PlayerBelief> players, double now, Pose2 self) {
         if (players == null) return;
-        for (PlayerBelief p : players) {
+        for (int i = 0; i < players.size(); i++) {   // indexed: no iterator every cycle
+            PlayerBelief p = players.get(i);
             if (p == null || !(now - p.time() <= config.beliefs().playerMemorySeconds())) continue;
             // A remembered player's relative vector goes stale as we walk; its own-frame position does not.
             Vector2 rel;
@@ -89,7 +90,7 @@ public final class AvoidObstacles {
         if (target == null || !target.isFinite() || !blocked(obstacles, target, c.clearance())) return target;
         List<Vector2> near = new ArrayList<>();
         double reach = target.norm() + c.clearance();
-        for (Vector2 o : obstacles) if (o.norm() <= reach) near.add(o);
+        for (int i = 0; i < obstacles.size(); i++) if (obstacles.get(i).norm() <= reach) near.add(obstacles.get(i));
         Escape best = null;
         double bestCost = Double.POSITIVE_INFINITY;
         for (Escape e : escapeAngleSet(near, c.clearance())) {
@@ -104,11 +105,12 @@ public final class AvoidObstacles {
     static boolean blocked(List<Vector2> obstacles, Vector2 target, double clearance) {
         double len = target.norm();
         if (len < 1e-9) return false;
-        Vector2 dir = target.times(1 / len);
-        for (Vector2 o : obstacles) {
-            double along = o.dot(dir);
+        double dx = target.x() * (1 / len), dy = target.y() * (1 / len);   // the unit direction, as target.times(1 / len)
+        for (int i = 0; i < obstacles.size(); i++) {   // runs every cycle: no iterator, no vectors
+            Vector2 o = obstacles.get(i);
+            double along = o.x() * dx + o.y() * dy;
             if (along <= 0 || along >= len + clearance) continue;
-            if (Math.abs(dir.cross(o)) < clearance) return true;
+            if (Math.abs(dx * o.y() - dy * o.x()) < clearance) return true;
         }
         return false;
     }
