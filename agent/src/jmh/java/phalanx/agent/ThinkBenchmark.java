@@ -9,7 +9,10 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import phalanx.comm.perception.Perception;
 import phalanx.comm.recording.Recordings;
+import phalanx.comm.sexp.MalformedMessageException;
+import phalanx.comm.sexp.PerceptionParser;
 
 import java.nio.charset.StandardCharsets;
 import java.util.List;
@@ -18,7 +21,9 @@ import java.util.concurrent.TimeUnit;
 /**
  * One whole player cycle (parse, beliefs, team channel, brain, motion, effector text) over a
  * recorded perceptor stream, without the socket: the think time the 20 ms cycle budget is about.
- * Player 1 runs the coordinator too. Script: scripts/think-bench.
+ * Player 1 runs the coordinator too. {@link #parse} is the parser alone on the same stream: its
+ * allocation is the perception the cycle must build (agent/README.md, "Measured cost").
+ * Script: scripts/think-bench.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)
@@ -32,6 +37,7 @@ public class ThinkBenchmark {
     private byte[][] messages;
     private int next;
     private PlayerRuntime runtime;
+    private final PerceptionParser parser = new PerceptionParser();
 
     @Setup(Level.Trial)
     public void load() throws Exception {
@@ -46,5 +52,12 @@ public class ThinkBenchmark {
         byte[] m = messages[next];
         next = next + 1 == messages.length ? 1 : next + 1; // line 1 is the pre-init message
         return runtime.update(m, m.length);
+    }
+
+    @Benchmark
+    public Perception parse() throws MalformedMessageException {
+        byte[] m = messages[next];
+        next = next + 1 == messages.length ? 1 : next + 1;
+        return parser.parse(m, 0, m.length);
     }
 }

@@ -9,6 +9,7 @@ import phalanx.comm.team.ActionId;
 import phalanx.coordination.CoordinationConfig;
 import phalanx.coordination.formation.FormationGenerator;
 import phalanx.coordination.formation.Role;
+import phalanx.localization.field.FieldSpec;
 import phalanx.localization.field.Vector2;
 
 /**
@@ -19,6 +20,11 @@ final class FieldBrain implements Brain {
     private final FieldPlayerBehaviour behaviour;
     private final Role role;
     private final CoordinationConfig coordination;
+    // The home spot of the last ball: the believed ball changes only with vision (every third
+    // cycle), and the whole formation is built to read one spot of it.
+    private Vector2 homeBall;
+    private FieldSpec homeField;
+    private Vector2 home;
 
     FieldBrain(FieldPlayerBehaviour behaviour, int unum, int players, CoordinationConfig coordination) {
         this.behaviour = behaviour;
@@ -29,7 +35,11 @@ final class FieldBrain implements Brain {
     @Override public Decision decide(Situation s, TeamChannel channel) {
         behaviour.order(channel.order());
         Vector2 ball = s.belief().ballGlobal() != null ? s.belief().ballGlobal() : Vector2.ZERO;
-        Vector2 home = FormationGenerator.generate(ball, s.field(), coordination.formation()).position(role);
+        if (!ball.equals(homeBall) || s.field() != homeField) {
+            home = FormationGenerator.generate(ball, s.field(), coordination.formation()).position(role);
+            homeBall = ball;
+            homeField = s.field();
+        }
         return behaviour.decide(s, channel.coordinatorQuiet(), home);
     }
 

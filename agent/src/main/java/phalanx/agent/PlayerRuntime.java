@@ -96,7 +96,7 @@ public final class PlayerRuntime {
         }
         JointVelocities v = parts.body().step(p, d.move());
         parts.beliefs().odometry(parts.body().odometry().forward(), parts.body().odometry().left(), parts.body().odometry().turnDeg());
-        headTowards(v, p, d).appendTo(out);
+        appendWithHead(v, p, d);
         if (say != null) out.say(say);
         if (parts.draw().on()) draw(belief, role, unum);
     }
@@ -110,12 +110,18 @@ public final class PlayerRuntime {
         }
     }
 
-    /** The head follows the decision's target with a P-controller; motion files leave the head alone. */
-    private static JointVelocities headTowards(JointVelocities v, Perception p, Decision d) {
-        if (!p.joints().has(Joint.HJ1) || !p.joints().has(Joint.HJ2)) return v;
+    /**
+     * Appends the body's commands with the head following the decision's target by a P-controller;
+     * motion files leave the head alone.
+     */
+    private void appendWithHead(JointVelocities v, Perception p, Decision d) {
+        if (!p.joints().has(Joint.HJ1) || !p.joints().has(Joint.HJ2)) {
+            v.appendTo(out);
+            return;
+        }
         double yaw = HEAD_GAIN * Math.toRadians(d.head().yawDeg() - p.joints().degrees(Joint.HJ1));
         double pitch = HEAD_GAIN * Math.toRadians(d.head().pitchDeg() - p.joints().degrees(Joint.HJ2));
-        return v.with(Joint.HJ1, clamp(yaw)).with(Joint.HJ2, clamp(pitch));
+        v.appendTo(out, clamp(yaw), clamp(pitch));
     }
 
     private static double clamp(double radPerSecond) {

@@ -7,6 +7,8 @@ import phalanx.comm.wire.FrameReader;
 import phalanx.comm.wire.ServerConnection;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.logging.Logger;
 
 /**
@@ -25,6 +27,8 @@ public final class ThinkLoop {
     private final PlayerOptions options;
     private final PlayerRuntime runtime;
     private final ThinkTimes times = new ThinkTimes();
+    /** The JVM's per-thread CPU clock, null where it has none. */
+    private final ThreadMXBean cpuClock = cpuClock();
 
     public ThinkLoop(ServerConnection connection, PlayerOptions options, PlayerRuntime runtime) {
         this.connection = connection;
@@ -50,9 +54,12 @@ public final class ThinkLoop {
             if (!awaitFirstMessage()) return end("the server accepted the connection but sent nothing for 30 s");
             while (true) {
                 in.next();
-                long start = System.nanoTime();
+                long start = System.nanoTime(), cpuStart = cpuNow();
                 CharSequence reply = runtime.update(in.buffer(), in.length());
-                if (runtime.cycles() > 1) times.add(System.nanoTime() - start); // thinking only, not the send
+                if (runtime.cycles() > 1) { // thinking only, not the send
+                    long wall = System.nanoTime() - start, cpu = cpuNow();
+                    times.add(wall, cpu < 0 || cpuStart < 0 ? -1 : cpu - cpuStart);
+                }
                 connection.send(reply);
                 if (runtime.cycles() == 2) LOG.info("in the game as " + options.team() + " " + options.unum());
             }
@@ -74,6 +81,27 @@ public final class ThinkLoop {
             connection.send("(syn)");
         }
         return false;
+    }
+
+    /** This thread's CPU time in ns, or -1 when not measured. */
+    private long cpuNow() {
+        return cpuClock == null ? -1 : cpuClock.getCurrentThreadCpuTime();
+    }
+
+    /**
+     * The thread CPU clock if this JVM has one (HotSpot on Linux reads it with one clock_gettime),
+     * switched on if it is off; null otherwise, and the think times then report wall time only.
+     */
+    private static ThreadMXBean cpuClock() {
+        try {
+            ThreadMXBean t = ManagementFactory.getThreadMXBean();
+            if (!t.isCurrentThreadCpuTimeSupported()) return null;
+            if (!t.isThreadCpuTimeEnabled()) t.setThreadCpuTimeEnabled(true);
+            return t;
+        } catch (UnsupportedOperationException | SecurityException e) {
+            LOG.info("no thread CPU time on this JVM (" + e + "): think times are wall time only");
+            return null;
+        }
     }
 
     private Outcome end(String reason) {

@@ -61,12 +61,15 @@ class ScriptsTest {
         assertTrue(r.output().contains("stopped 0 player(s)"), r.output());
     }
 
-    /** player-stats on a log folder written by hand: think times, GC pauses, falls and the time lying. */
+    /**
+     * player-stats on a log folder written by hand: think times (wall, and CPU where the log has it:
+     * player 2's older line has none), GC pauses, falls and the time lying.
+     */
     @Test
     void playerStatsCountsThinkTimesGcPausesAndFalls() throws Exception {
         Path dir = Files.createTempDirectory("player-stats");
         Files.writeString(dir.resolve("player-1.out"), String.join("\n",
-                "INFO: think_us p50=100 p99=900 max=2500 cycles=3000 over_20ms=0",
+                "INFO: think_us p50=100 p99=900 max=2500 cycles=3000 over_20ms=0 cpu_p50=30 cpu_p99=200 cpu_max=700",
                 "INFO: fall 1: FALLEN_BACK at game time 10.00",
                 "INFO: fall 1: standing again at game time 13.00 after 3.00 s",
                 "INFO: fall 2: FALLEN_FRONT at game time 50.00", ""));
@@ -83,6 +86,11 @@ class ScriptsTest {
         assertEquals(0, r.status(), r.output());
         String last = r.output().strip().lines().reduce((a, b) -> b).orElse("");
         assertEquals("think_p50_us_max=120 think_p99_us_max=1500 think_max_us=30000 cycles=6000 over_20ms=3 over_20ms_share=0.0005"
-                + " gc_pauses=3 gc_max_ms=7.5 falls=4 stood_up=3 down_s_median=3.00", last);
+                + " gc_pauses=3 gc_max_ms=7.5 falls=4 stood_up=3 down_s_median=3.00 cpu_p50_us_max=30 cpu_p99_us_max=200 cpu_max_us=700", last);
+        assertTrue(r.output().lines().anyMatch(l -> l.matches("2 .* - +- +-")), "player 2 logged no CPU time: " + r.output());
+        // no player with CPU figures: NaN, not 0
+        Files.writeString(dir.resolve("player-1.out"), "INFO: think_us p50=100 p99=900 max=2500 cycles=3000 over_20ms=0\n");
+        r = run("bash", "scripts/player-stats", dir.toString());
+        assertTrue(r.output().strip().endsWith("cpu_p50_us_max=NaN cpu_p99_us_max=NaN cpu_max_us=NaN"), r.output());
     }
 }

@@ -75,7 +75,7 @@ public class ActionsBenchmark {
     }
 
     private static PlayerBelief player(String team, int id, double t, Pose2 self, Vector2 g) {
-        return new PlayerBelief(team, id, t, self.toRelative(g), g, new Vector2[BodyPart.COUNT], new Vector2[BodyPart.COUNT]);
+        return new PlayerBelief(team, id, t, self.toRelative(g), g, new Vector2[BodyPart.COUNT], self);
     }
 
     private int step() { return next = (next + 1) & 63; }

@@ -47,7 +47,8 @@ public final class AvoidObstacles {
         if (self != null && f != null) {
             for (int sx = -1; sx <= 1; sx += 2) {
                 for (int sy = -1; sy <= 1; sy += 2) {
-                    add(out, self.toRelative(new Vector2(sx * f.halfLength(), sy * f.goalWidth() / 2)));
+                    double x = sx * f.halfLength(), y = sy * f.goalWidth() / 2;
+                    if (!surelyOutOfRange(self, x, y)) add(out, self.toRelative(new Vector2(x, y)));
                 }
             }
         }
@@ -56,12 +57,28 @@ public final class AvoidObstacles {
 
     private void addPlayers(List<Vector2> out, List<PlayerBelief> players, double now, Pose2 self) {
         if (players == null) return;
-        for (PlayerBelief p : players) {
+        for (int i = 0; i < players.size(); i++) {   // indexed: no iterator every cycle
+            PlayerBelief p = players.get(i);
             if (p == null || !(now - p.time() <= config.beliefs().playerMemorySeconds())) continue;
             // A remembered player's relative vector goes stale as we walk; its own-frame position does not.
-            Vector2 rel = self != null && p.global() != null ? self.toRelative(p.global()) : p.relative();
+            Vector2 rel;
+            if (self != null && p.global() != null) {
+                if (surelyOutOfRange(self, p.global().x(), p.global().y())) continue;
+                rel = self.toRelative(p.global());
+            } else {
+                rel = p.relative();
+            }
             add(out, rel);
         }
+    }
+
+    /**
+     * True when an own-frame point lies beyond the range, with room for rounding: turning it into the
+     * body frame keeps its distance, so {@link #add} would drop it; this skips the transform (run for
+     * every player seen, every cycle).
+     */
+    private boolean surelyOutOfRange(Pose2 self, double x, double y) {
+        return Math.hypot(x - self.x(), y - self.y()) > config.obstacles().range() + 1e-6;
     }
 
     private void add(List<Vector2> out, Vector2 rel) {
@@ -73,7 +90,7 @@ public final class AvoidObstacles {
         if (target == null || !target.isFinite() || !blocked(obstacles, target, c.clearance())) return target;
         List<Vector2> near = new ArrayList<>();
         double reach = target.norm() + c.clearance();
-        for (Vector2 o : obstacles) if (o.norm() <= reach) near.add(o);
+        for (int i = 0; i < obstacles.size(); i++) if (obstacles.get(i).norm() <= reach) near.add(obstacles.get(i));
         Escape best = null;
         double bestCost = Double.POSITIVE_INFINITY;
         for (Escape e : escapeAngleSet(near, c.clearance())) {
@@ -88,11 +105,12 @@ public final class AvoidObstacles {
     static boolean blocked(List<Vector2> obstacles, Vector2 target, double clearance) {
         double len = target.norm();
         if (len < 1e-9) return false;
-        Vector2 dir = target.times(1 / len);
-        for (Vector2 o : obstacles) {
-            double along = o.dot(dir);
+        double dx = target.x() * (1 / len), dy = target.y() * (1 / len);   // the unit direction, as target.times(1 / len)
+        for (int i = 0; i < obstacles.size(); i++) {   // runs every cycle: no iterator, no vectors
+            Vector2 o = obstacles.get(i);
+            double along = o.x() * dx + o.y() * dy;
             if (along <= 0 || along >= len + clearance) continue;
-            if (Math.abs(dir.cross(o)) < clearance) return true;
+            if (Math.abs(dx * o.y() - dy * o.x()) < clearance) return true;
         }
         return false;
     }

@@ -69,7 +69,7 @@ public final class World {
         Vector2 g = new Vector2(x, y);
         Vector2 rel = self == null ? g : self.toRelative(g);
         return new PlayerBelief(team, id, now, rel, self == null ? null : g,
-                new Vector2[BodyPart.COUNT], self == null ? null : new Vector2[BodyPart.COUNT]);
+                new Vector2[BodyPart.COUNT], self);
     }
 
     public World fall(FallState f) { fall = f; return this; }

@@ -52,7 +52,8 @@ public final class EffectorMessage {
 
     /** {@code (he1 v)}: target angular velocity of one hinge joint in rad/s. */
     public EffectorMessage hinge(Joint joint, double radPerSecond) {
-        requireFinite(radPerSecond, joint.effectorName() + " velocity");
+        // the message is built only on failure: this runs 22 times a cycle
+        if (!Double.isFinite(radPerSecond)) requireFinite(radPerSecond, joint.effectorName() + " velocity");
         sb.append('(').append(joint.effectorName()).append(' ');
         number(radPerSecond);
         sb.append(')');

@@ -26,6 +26,8 @@ import phalanx.localization.field.Vector2;
  * lines and no two roles pile up in a corner.
  */
 public final class FormationGenerator {
+    private static final Role[] ROLES = Role.values();
+
     private FormationGenerator() {}
 
     public static Formation generate(Vector2 ballIn, FieldSpec field, FormationConfig c) {
@@ -93,7 +95,10 @@ public final class FormationGenerator {
         double gy = Math.max(-(field.goalWidth() / 2 - 0.2), Math.min(field.goalWidth() / 2 - 0.2, ball.y() * 0.2));
         p.put(Role.GK, new Vector2(-hl + c.goalkeeperDepth(), gy));
 
-        for (Map.Entry<Role, Vector2> e : p.entrySet()) e.setValue(field.clamp(e.getValue(), c.inset()));
+        for (Role r : ROLES) {   // not over entrySet(): an EnumMap makes an entry object per step
+            Vector2 at = p.get(r);
+            if (at != null) p.put(r, field.clamp(at, c.inset()));
+        }
         return new Formation(p);
     }
 

@@ -124,8 +124,12 @@ public final class BeliefStore {
         tilt.update(p.gyro(), p.acc(), dt);
 
         selfFilter.predict(odoForward, odoLeft, odoTurn);
-        if (ballRelative != null && (odoForward != 0 || odoLeft != 0 || odoTurn != 0))
-            ballRelative = ballRelative.minus(new Vector2(odoForward, odoLeft)).rotate(-odoTurn);
+        if (ballRelative != null && (odoForward != 0 || odoLeft != 0 || odoTurn != 0)) {
+            // ballRelative.minus(new Vector2(odoForward, odoLeft)).rotate(-odoTurn) in one allocation
+            double x = ballRelative.x() - odoForward, y = ballRelative.y() - odoLeft;
+            double r = Math.toRadians(-odoTurn), c = Math.cos(r), s = Math.sin(r);
+            ballRelative = new Vector2(c * x - s * y, s * x + c * y);
+        }
         odoForward = odoLeft = odoTurn = 0;
 
         if (p.hasVision()) see(p, fall);
@@ -164,9 +168,8 @@ public final class BeliefStore {
             if (!pol.isUsable()) { stats.badPolar++; continue; }
             if (side == null) continue;
             Landmark l = Landmark.byIndex(i);
-            Vector3 rel = camera.toBody(pol);
             Vector3 at = field.landmark(l, side);
-            sightings.add(new LandmarkSighting(l, new Vector2(at.x(), at.y()), new Vector2(rel.x(), rel.y())));
+            sightings.add(new LandmarkSighting(l, new Vector2(at.x(), at.y()), camera.toGround(pol)));
         }
         if (side == null) stats.noSide++;
         else if (sightings.isEmpty()) stats.noLandmark++;
@@ -200,8 +203,7 @@ public final class BeliefStore {
         if (ball != null) {
             if (!ball.isUsable()) stats.badPolar++;
             else {
-                Vector3 r = camera.toBody(ball);
-                ballRelative = new Vector2(r.x(), r.y());
+                ballRelative = camera.toGround(ball);
                 ballTime = time;
                 if (self != null && steady) {
                     Vector2 g = self.toGlobal(ballRelative);
@@ -223,24 +225,21 @@ public final class BeliefStore {
         boolean mate = teamName.equals(sp.team());
         if (mate && sp.id() == unum) return false;      // the agent sees its own lower arms
         Vector2[] rel = new Vector2[BodyPart.COUNT];
-        Vector2[] glob = self == null ? null : new Vector2[BodyPart.COUNT];
         double sx = 0, sy = 0;
         int n = 0;
         for (int i = 0; i < BodyPart.COUNT; i++) {
             Polar pol = sp.parts()[i];
             if (pol == null) continue;
             if (!pol.isUsable()) { stats.badPolar++; continue; }
-            Vector3 r = camera.toBody(pol);
-            rel[i] = new Vector2(r.x(), r.y());
-            if (glob != null) glob[i] = self.toGlobal(rel[i]);
-            sx += r.x();
-            sy += r.y();
+            rel[i] = camera.toGround(pol);
+            sx += rel[i].x();
+            sy += rel[i].y();
             n++;
         }
         if (n == 0) return false;
         Vector2 head = rel[BodyPart.HEAD.ordinal()];
         Vector2 where = head != null ? head : new Vector2(sx / n, sy / n);
-        PlayerBelief b = new PlayerBelief(sp.team(), sp.id(), time, where, self == null ? null : self.toGlobal(where), rel, glob);
+        PlayerBelief b = new PlayerBelief(sp.team(), sp.id(), time, where, self == null ? null : self.toGlobal(where), rel, self);
         (mate ? mates : others)[sp.id()] = b;
         return true;
     }

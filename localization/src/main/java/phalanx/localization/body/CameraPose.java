@@ -4,6 +4,7 @@ import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.JointAngles;
 import phalanx.comm.perception.Polar;
 import phalanx.comm.perception.Vector3;
+import phalanx.localization.field.Vector2;
 
 /**
  * Where the camera is and how it is turned, relative to the body at one instant, so that a polar,
@@ -53,8 +54,7 @@ public final class CameraPose {
         double best = Double.NEGATIVE_INFINITY;
         for (int leg = 0; leg < 2; leg++) {
             double[] s = body.soleInTorso(joints, leg == 0);
-            double[] sole = apply(tilt, new double[] {s[0], 0, s[1]});
-            best = Math.max(best, -sole[2]);
+            best = Math.max(best, -heightOf(tilt, s[0], 0, s[1]));   // z of apply(tilt, {s[0], 0, s[1]})
         }
         return new CameraPose(m, c, best);
     }
@@ -73,6 +73,17 @@ public final class CameraPose {
         double cv = Math.cos(v);
         double x = p.distance() * cv * Math.cos(h), y = p.distance() * cv * Math.sin(h), z = p.distance() * Math.sin(v);
         return new Vector3(cx + m00 * x + m01 * y + m02 * z, cy + m10 * x + m11 * y + m12 * z, cz + m20 * x + m21 * y + m22 * z);
+    }
+
+    /**
+     * The x and y of {@link #toBody} (the observation on the ground plane of the level body frame)
+     * without the Vector3: the belief store places every seen landmark, ball and body part so.
+     */
+    public Vector2 toGround(Polar p) {
+        double h = Math.toRadians(p.horizontalDeg()), v = Math.toRadians(p.verticalDeg());
+        double cv = Math.cos(v);
+        double x = p.distance() * cv * Math.cos(h), y = p.distance() * cv * Math.sin(h), z = p.distance() * Math.sin(v);
+        return new Vector2(cx + m00 * x + m01 * y + m02 * z, cy + m10 * x + m11 * y + m12 * z);
     }
 
     /** Height of the torso centre above the ground (forward kinematics of the supporting leg). */
@@ -104,16 +115,15 @@ public final class CameraPose {
      * direction projected on the ground.
      */
     static double[] levelRotation(Vector3 acc) {
-        double[] id = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-        if (acc == null || !acc.isFinite()) return id;
+        if (acc == null || !acc.isFinite()) return identity();
         double ux = acc.y(), uy = -acc.x(), uz = acc.z();   // server torso frame -> body frame
         double n = Math.sqrt(ux * ux + uy * uy + uz * uz);
-        if (n < 1.0) return id;                              // no gravity reading (first messages)
+        if (n < 1.0) return identity();                      // no gravity reading (first messages)
         ux /= n; uy /= n; uz /= n;
         // Rodrigues: axis = u x z = (uy, -ux, 0), cos = uz.
         double ax = uy, ay = -ux, s = Math.sqrt(ax * ax + ay * ay), c = uz;
         if (s < 1e-9) {
-            if (c > 0) return id;
+            if (c > 0) return identity();
             return new double[] {1, 0, 0, 0, -1, 0, 0, 0, -1};  // upside down: turn about x
         }
         ax /= s; ay /= s;
@@ -131,6 +141,11 @@ public final class CameraPose {
                 r[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
         return r;
     }
+
+    private static double[] identity() { return new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1}; }
+
+    /** The z row of {@link #apply}: m applied to (x, y, z), without the vectors (twice per vision frame). */
+    private static double heightOf(double[] m, double x, double y, double z) { return m[6] * x + m[7] * y + m[8] * z; }
 
     private static double[] apply(double[] m, double[] v) {
         return new double[] {m[0] * v[0] + m[1] * v[1] + m[2] * v[2], m[3] * v[0] + m[4] * v[1] + m[5] * v[2],

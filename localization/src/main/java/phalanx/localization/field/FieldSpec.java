@@ -44,8 +44,11 @@ public record FieldSpec(String name, double length, double width, double goalWid
     }
 
     /** True when the point lies on the field, with an optional margin outside the lines. */
-    public boolean contains(Vector2 p, double margin) {
-        return Math.abs(p.x()) <= halfLength() + margin && Math.abs(p.y()) <= halfWidth() + margin;
+    public boolean contains(Vector2 p, double margin) { return contains(p.x(), p.y(), margin); }
+
+    /** {@link #contains(Vector2, double)} for a point given by its coordinates. */
+    public boolean contains(double x, double y, double margin) {
+        return Math.abs(x) <= halfLength() + margin && Math.abs(y) <= halfWidth() + margin;
     }
 
     /** The point moved inside the field, {@code inset} metres from the lines. */

@@ -70,19 +70,24 @@ public final class SelfLocalizer {
         Pose2 best = null;
         double bestErr = Double.POSITIVE_INFINITY;
         for (int sign = -1; sign <= 1; sign += 2) {
-            Vector2 c = new Vector2(mx - sign * h * uy, my + sign * h * ux);
-            if (!field.contains(c, config.fieldMarginMetres())) continue;
+            double cx = mx - sign * h * uy, cy = my + sign * h * ux;   // the candidate position
+            if (!field.contains(cx, cy, config.fieldMarginMetres())) continue;
             // Body orientation that makes each landmark appear at its seen bearing.
-            double ta = Angles.normalize(pa.minus(c).angleDeg() - a.relative().angleDeg());
-            double tb = Angles.normalize(pb.minus(c).angleDeg() - b.relative().angleDeg());
+            double ta = Angles.normalize(bearingDeg(cx, cy, pa) - a.relative().angleDeg());
+            double tb = Angles.normalize(bearingDeg(cx, cy, pb) - b.relative().angleDeg());
             double err = Math.abs(Angles.difference(ta, tb));
             if (err < bestErr) {
                 bestErr = err;
-                best = new Pose2(c.x(), c.y(), Angles.normalize(tb + Angles.difference(ta, tb) / 2));
+                best = new Pose2(cx, cy, Angles.normalize(tb + Angles.difference(ta, tb) / 2));
             }
             if (h == 0) break;
         }
         // The right candidate sees both landmarks at their seen bearings; a mirror image does not.
         return bestErr <= 20 ? best : null;
+    }
+
+    /** to.minus(new Vector2(x, y)).angleDeg() without the vectors (every landmark pair of every frame). */
+    private static double bearingDeg(double x, double y, Vector2 to) {
+        return Math.toDegrees(Math.atan2(to.y() - y, to.x() - x));
     }
 }

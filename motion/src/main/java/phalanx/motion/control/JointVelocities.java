@@ -10,6 +10,7 @@ import java.util.Arrays;
  * does not have (no reading, e.g. toes on types 0-3) has no command and is not sent.
  */
 public final class JointVelocities {
+    private static final Joint[] JOINTS = Joint.values();
     private final double[] radPerSecond;
 
     JointVelocities(double[] radPerSecond) { this.radPerSecond = radPerSecond; }
@@ -37,7 +38,19 @@ public final class JointVelocities {
 
     /** Appends {@code (lle3 0.5)}... for every joint that has a command. */
     public EffectorMessage appendTo(EffectorMessage message) {
-        for (Joint j : Joint.values()) if (has(j)) message.hinge(j, radPerSecond[j.ordinal()]);
+        for (Joint j : JOINTS) if (has(j)) message.hinge(j, radPerSecond[j.ordinal()]);
+        return message;
+    }
+
+    /**
+     * The same text as {@code with(HJ1, yaw).with(HJ2, pitch).appendTo(message)} without the two
+     * copies: the head's commands replaced (NaN: none), for the agent's head control every cycle.
+     */
+    public EffectorMessage appendTo(EffectorMessage message, double headYawRadPerSecond, double headPitchRadPerSecond) {
+        for (Joint j : JOINTS) {
+            double v = j == Joint.HJ1 ? headYawRadPerSecond : j == Joint.HJ2 ? headPitchRadPerSecond : radPerSecond[j.ordinal()];
+            if (!Double.isNaN(v)) message.hinge(j, v);
+        }
         return message;
     }
 

@@ -33,6 +33,7 @@ import java.util.logging.Logger;
  * One instance per player; not thread-safe.
  */
 public final class MotionController {
+    private static final Joint[] JOINTS = Joint.values();
     private static final Logger LOG = Logger.getLogger(MotionController.class.getName());
 
     private final MotionLibrary library;
@@ -81,17 +82,17 @@ public final class MotionController {
         double[] out = new double[Joint.COUNT];
         if (playing instanceof PhaseMotion) {
             int remaining = Math.max(1, segmentCycles - elapsedCycles(now));
-            for (Joint j : Joint.values()) out[j.ordinal()] = phaseVelocity(j, current, remaining);
+            for (Joint j : JOINTS) out[j.ordinal()] = phaseVelocity(j, current, remaining);
         } else if (playing instanceof TextMotion tm) {
             double gain = Math.max(config.turnGainMin(), Math.min(config.turnGainMax(), request.gain()));
             Arrays.fill(targets, Double.NaN);
             for (int k = 0; k < tm.joints().size(); k++) targets[tm.joints().get(k).ordinal()] = tm.targetDeg(index, k);
-            for (Joint j : Joint.values()) {
+            for (Joint j : JOINTS) {
                 double v = phaseVelocity(j, current, config.textPoseCycles());
                 out[j.ordinal()] = Double.isNaN(v) ? v : clamp(gain * v);
             }
         } else {
-            for (Joint j : Joint.values()) out[j.ordinal()] = current.has(j) ? 0.0 : Double.NaN;
+            for (Joint j : JOINTS) out[j.ordinal()] = current.has(j) ? 0.0 : Double.NaN;
         }
         for (int i = 0; i < out.length; i++) lastCommand[i] = Double.isNaN(out[i]) ? 0 : out[i];
         return new JointVelocities(out);
@@ -174,7 +175,7 @@ public final class MotionController {
             Phase p = pm.phase(index);
             double scale = request.slowdown() ? config.walkSlowdownFactor() : 1.0;
             segmentCycles = Math.max(1, (int) Math.round(p.durationMs() * scale / 1000.0 / dt));
-            for (Joint j : Joint.values()) targets[j.ordinal()] = p.targetDeg(j);
+            for (Joint j : JOINTS) targets[j.ordinal()] = p.targetDeg(j);
             lean(p, request.lean());
         } else {
             segmentCycles = config.textPoseCycles();

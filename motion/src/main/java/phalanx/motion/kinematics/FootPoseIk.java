@@ -26,7 +26,11 @@ package phalanx.motion.kinematics;
 public final class FootPoseIk {
     private static final double S = Math.sqrt(0.5);
 
-    private FootPoseIk() {}
+    /** Scratch 3x3 matrices of {@link #solveInto}, so the walk's IK allocates nothing. */
+    private final double[] rf = new double[9], r1 = new double[9], r2 = new double[9], m1 = new double[9], m2 = new double[9];
+
+    /** An IK with its own scratch space (one per user: not thread-safe); see {@link #solveInto}. */
+    public FootPoseIk() {}
 
     /** The six leg angles in degrees: yaw-pitch (lj1), hip roll, hip pitch, knee, ankle pitch, ankle roll. */
     public record Angles(double yawPitch, double hipRoll, double hipPitch, double knee, double anklePitch, double ankleRoll) {}
@@ -39,7 +43,18 @@ public final class FootPoseIk {
      * pitch λ. Targets out of reach are pulled in along the hip-ankle line.
      */
     public static Angles solve(LegGeometry g, boolean left, double x, double y, double z, double yawDeg, double pitchDeg) {
-        double[] rf = mul(rotX(Math.toRadians(pitchDeg)), rotZ(Math.toRadians(yawDeg)));
+        double[] q = new double[6];
+        new FootPoseIk().solveInto(g, left, x, y, z, yawDeg, pitchDeg, q, 0);
+        return new Angles(q[0], q[1], q[2], q[3], q[4], q[5]);
+    }
+
+    /**
+     * {@link #solve} without allocating: the six angles in degrees, in the order of {@link Angles},
+     * go to {@code out[at]} to {@code out[at + 5]}.
+     */
+    public void solveInto(LegGeometry g, boolean left, double x, double y, double z, double yawDeg, double pitchDeg,
+                          double[] out, int at) {
+        mul(rotX(Math.toRadians(pitchDeg), r1), rotZ(Math.toRadians(yawDeg), r2), rf);
         // the hip seen from the foot: v = Rf^T (-p)
         double vx = -(rf[0] * x + rf[3] * y + rf[6] * z);
         double vy = -(rf[1] * x + rf[4] * y + rf[7] * z);
@@ -57,16 +72,20 @@ public final class FootPoseIk {
         double wz = -Math.sin(ankleRoll) * vx + Math.cos(ankleRoll) * vz;
         double anklePitch = Math.atan2(wy, wz) - Math.atan2(a * Math.sin(knee), a * Math.cos(knee) + b);
         // R_hip·Rx(hipPitch) = Rf·Ry(-ankleRoll)·Rx(-(knee+anklePitch)); turn the yaw-pitch axis onto z
-        double[] m = mul(mul(rf, rotY(-ankleRoll)), rotX(-(knee + anklePitch)));
-        double[] n = mul(rotY(Math.toRadians(left ? -45 : 45)), m);
+        mul(mul(rf, rotY(-ankleRoll, r1), m1), rotX(-(knee + anklePitch), r2), m2);
+        double[] n = mul(rotY(Math.toRadians(left ? -45 : 45), r1), m2, m1);
         // n = Rz(t1)·Ry(t2)·Rx(t3)
         double t2 = -Math.asin(clamp(n[6]));
         double t1 = Math.atan2(n[3], n[0]);
         double t3 = Math.atan2(n[7], n[8]);
         double yawPitch = left ? -t1 : t1;
         double hipRoll = left ? t2 + Math.PI / 4 : t2 - Math.PI / 4;
-        return new Angles(Math.toDegrees(yawPitch), Math.toDegrees(hipRoll), Math.toDegrees(t3),
-                Math.toDegrees(knee), Math.toDegrees(anklePitch), Math.toDegrees(ankleRoll));
+        out[at] = Math.toDegrees(yawPitch);
+        out[at + 1] = Math.toDegrees(hipRoll);
+        out[at + 2] = Math.toDegrees(t3);
+        out[at + 3] = Math.toDegrees(knee);
+        out[at + 4] = Math.toDegrees(anklePitch);
+        out[at + 5] = Math.toDegrees(ankleRoll);
     }
 
     /**
@@ -92,9 +111,33 @@ public final class FootPoseIk {
 
     // --- 3x3 row-major helpers ------------------------------------------------------------------
 
-    static double[] rotX(double t) { double c = Math.cos(t), s = Math.sin(t); return new double[] {1, 0, 0, 0, c, -s, 0, s, c}; }
-    static double[] rotY(double t) { double c = Math.cos(t), s = Math.sin(t); return new double[] {c, 0, s, 0, 1, 0, -s, 0, c}; }
-    static double[] rotZ(double t) { double c = Math.cos(t), s = Math.sin(t); return new double[] {c, -s, 0, s, c, 0, 0, 0, 1}; }
+    static double[] rotX(double t) { return rotX(t, new double[9]); }
+    static double[] rotY(double t) { return rotY(t, new double[9]); }
+    static double[] rotZ(double t) { return rotZ(t, new double[9]); }
+
+    private static double[] rotX(double t, double[] r) {
+        double c = Math.cos(t), s = Math.sin(t);
+        r[0] = 1; r[1] = 0; r[2] = 0;
+        r[3] = 0; r[4] = c; r[5] = -s;
+        r[6] = 0; r[7] = s; r[8] = c;
+        return r;
+    }
+
+    private static double[] rotY(double t, double[] r) {
+        double c = Math.cos(t), s = Math.sin(t);
+        r[0] = c; r[1] = 0; r[2] = s;
+        r[3] = 0; r[4] = 1; r[5] = 0;
+        r[6] = -s; r[7] = 0; r[8] = c;
+        return r;
+    }
+
+    private static double[] rotZ(double t, double[] r) {
+        double c = Math.cos(t), s = Math.sin(t);
+        r[0] = c; r[1] = -s; r[2] = 0;
+        r[3] = s; r[4] = c; r[5] = 0;
+        r[6] = 0; r[7] = 0; r[8] = 1;
+        return r;
+    }
 
     /** Rotation by {@code t} radians about the unit axis {@code u} (Rodrigues). */
     static double[] rot(double[] u, double t) {
@@ -105,8 +148,10 @@ public final class FootPoseIk {
             z * x * k - y * s, z * y * k + x * s, c + z * z * k};
     }
 
-    static double[] mul(double[] p, double[] q) {
-        double[] r = new double[9];
+    static double[] mul(double[] p, double[] q) { return mul(p, q, new double[9]); }
+
+    /** p·q into r (which must be neither p nor q). */
+    private static double[] mul(double[] p, double[] q, double[] r) {
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) r[i * 3 + j] = p[i * 3] * q[j] + p[i * 3 + 1] * q[3 + j] + p[i * 3 + 2] * q[6 + j];
         return r;

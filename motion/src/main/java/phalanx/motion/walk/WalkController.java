@@ -21,6 +21,9 @@ public final class WalkController {
     private final int latency;
     private final double[] caps = new double[Joint.COUNT];
     private final double[] lastCommand = new double[Joint.COUNT];
+    // reused every cycle: the gait's targets plus this cycle's corrections, and the commands
+    private final double[] target = new double[Joint.COUNT], out = new double[Joint.COUNT];
+    private static final Joint[] JOINTS = Joint.values();
     /** Share of the accelerometer's tilt taken each cycle (time constant about 1 s at 50 Hz). */
     private static final double TILT_PULL = 0.02;
     private double pitchForward, rollRight;   // deg, estimated torso tilt
@@ -59,14 +62,16 @@ public final class WalkController {
         tilt(gyro, acc);
         double pitchErr = pitchForward - config.torsoLeanDeg();
         if (generator.walking() && haveGyro) {
-            headingError += (gyro.z() - generator.velocity().turnDeg()) * dt;
+            headingError += (gyro.z() - generator.turnDeg()) * dt;
             headingError = Math.max(-45, Math.min(45, headingError));
         } else {
             headingError = 0;
         }
         double hold = request.isZero() ? 0 : -config.gyroYawGain() * headingError; // a zero request must let the walk stop
-        double[] target = generator.step(hold == 0 ? request : new WalkVelocity(request.forward(), request.left(), request.turnDeg() + hold),
+        WalkVelocity wanted = hold == 0 ? request : new WalkVelocity(request.forward(), request.left(), request.turnDeg() + hold);
+        double[] gait = generator.advance(wanted,
                 clampAbs(config.tiltPlaceForward() * pitchErr, 0.04), clampAbs(-config.tiltPlaceLeft() * rollRight, 0.03));
+        System.arraycopy(gait, 0, target, 0, Joint.COUNT);   // the generator's own array: the corrections go on a copy
         double hip = config.tiltHipPitch() * pitchErr;
         target[Joint.LLJ3.ordinal()] += hip;
         target[Joint.RLJ3.ordinal()] += hip;
@@ -77,8 +82,7 @@ public final class WalkController {
             target[Joint.LLJ2.ordinal()] += roll;
             target[Joint.RLJ2.ordinal()] += roll;
         }
-        double[] out = new double[Joint.COUNT];
-        for (Joint j : Joint.values()) {
+        for (Joint j : JOINTS) {
             int i = j.ordinal();
             if (!current.has(j)) {
                 out[i] = Double.NaN;
@@ -91,7 +95,7 @@ public final class WalkController {
             out[i] = v;
             lastCommand[i] = v;
         }
-        return JointVelocities.of(out);
+        return JointVelocities.of(out);   // a copy
     }
 
     /**

@@ -52,6 +52,10 @@ public final class WalkGenerator {
     private Odometry odometry = Odometry.NONE;
     private double placeForward, placeLeft;                  // balance corrections of the landing
     private final double[] targets = new double[Joint.COUNT];
+    // scratch of step(), reused every cycle: the limited request and the landing pose
+    private final double[] want = new double[3], land = new double[3], neutralPose = new double[3];
+    private final FootPoseIk ik = new FootPoseIk();
+    private static final Joint[] JOINTS = Joint.values();
 
     public WalkGenerator(WalkConfig config, LegGeometry geometry, double cycleSeconds) {
         this.c = config;
@@ -71,13 +75,21 @@ public final class WalkGenerator {
      * within the feet's no-crossing bounds).
      */
     public double[] step(WalkVelocity request, double placeForward, double placeLeft) {
+        return advance(request, placeForward, placeLeft).clone();
+    }
+
+    /**
+     * {@link #step(WalkVelocity, double, double)} without the copy, for the {@link WalkController}:
+     * the returned array is this generator's own, valid until the next call; read it, don't keep it.
+     */
+    double[] advance(WalkVelocity request, double placeForward, double placeLeft) {
         this.placeForward = placeForward;
         this.placeLeft = placeLeft;
-        double[] want = limit(request);
+        limit(request, want);
         if (!walking) {
             if (want[0] == 0 && want[1] == 0 && want[2] == 0) {
                 odometry = Odometry.NONE;
-                return targets.clone();
+                return targets;
             }
             walking = true;
             t = 0;
@@ -105,13 +117,13 @@ public final class WalkGenerator {
                 System.arraycopy(swing, 0, liftoff, 0, 3);
             }
             double s = Math.min(1, (t - ds) / (ts - ds));
-            double[] land = landing(leftSwings);
+            landing(leftSwings, land);
             // cubic Hermite from lift-off to landing; end tangents follow the ground under the torso
             double swingTime = ts - ds, s2 = s * s, s3 = s2 * s;
             double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-            double[] ground = {-vf, -vl, -vt};
             for (int k = 0; k < 3; k++) {
-                double m = c.swingMatchGround() * ground[k] * swingTime + c.swingLinear() * (land[k] - liftoff[k]);
+                double ground = k == 0 ? -vf : k == 1 ? -vl : -vt;
+                double m = c.swingMatchGround() * ground * swingTime + c.swingLinear() * (land[k] - liftoff[k]);
                 swing[k] = h00 * liftoff[k] + h10 * m + h01 * land[k] + h11 * m;
             }
             lift = c.stepHeight() * Math.pow(Math.sin(Math.PI * s), c.liftExponent());
@@ -133,7 +145,7 @@ public final class WalkGenerator {
             }
         }
         computeTargets();
-        return targets.clone();
+        return targets;
     }
 
     /** Joint targets in degrees by {@link Joint#ordinal()}: legs (toes 0), arms, head 0. */
@@ -144,6 +156,9 @@ public final class WalkGenerator {
 
     /** The velocity now, after the limits. */
     public WalkVelocity velocity() { return new WalkVelocity(vf, vl, vt); }
+
+    /** The turn rate now, deg/s (the third component of {@link #velocity()}, without the record). */
+    double turnDeg() { return vt; }
 
     /** True while stepping; false when standing. */
     public boolean walking() { return walking; }
@@ -160,7 +175,9 @@ public final class WalkGenerator {
     // --- the model ----------------------------------------------------------------------------
 
     /** The request clamped to the limits, jointly: inside the ellipsoid of the three maxima. */
-    double[] limit(WalkVelocity r) {
+    double[] limit(WalkVelocity r) { return limit(r, new double[3]); }
+
+    private double[] limit(WalkVelocity r, double[] out) {
         double f = clamp(r.forward(), -c.maxBackward(), c.maxForward());
         double l = clamp(r.left(), -c.maxLeft(), c.maxLeft());
         double th = clamp(r.turnDeg(), -c.maxTurnDeg(), c.maxTurnDeg());
@@ -170,7 +187,10 @@ public final class WalkGenerator {
             double k = 1 / Math.sqrt(n);
             f *= k; l *= k; th *= k;
         }
-        return new double[] {f, l, th};
+        out[0] = f;
+        out[1] = l;
+        out[2] = th;
+        return out;
     }
 
     private void neutral(boolean isLeft, double[] pose) {
@@ -180,7 +200,7 @@ public final class WalkGenerator {
     }
 
     private boolean atNeutral() {
-        double[] n = new double[3];
+        double[] n = neutralPose;
         neutral(true, n);
         boolean ok = near(left, n);
         neutral(false, n);
@@ -201,17 +221,18 @@ public final class WalkGenerator {
     }
 
     /** Where the swinging foot lands: neutral moved by the body's motion over the coming stance (see the class comment). */
-    private double[] landing(boolean isLeft) {
+    private void landing(boolean isLeft, double[] out) {
         double stance = c.stepSeconds() * (1 + c.doubleSupport());
         double sign = isLeft ? 1 : -1;
         double mf = vf * stance, ml = vl * stance, mt = vt * stance;
         double yaw = mt / 2 + sign * Math.abs(mt) / 2;
         yaw = isLeft ? clamp(yaw, 0, c.maxFootYawDeg()) : clamp(yaw, -c.maxFootYawDeg(), 0);
-        double[] n = new double[3];
+        double[] n = neutralPose;
         neutral(isLeft, n);
         double a = Math.toRadians(yaw), co = Math.cos(a), si = Math.sin(a);
-        return new double[] {mf / 2 + co * n[0] - si * n[1] + placeForward,
-                ml / 2 + sign * Math.abs(ml) / 2 + si * n[0] + co * n[1] + placeLeft, yaw};
+        out[0] = mf / 2 + co * n[0] - si * n[1] + placeForward;
+        out[1] = ml / 2 + sign * Math.abs(ml) / 2 + si * n[0] + co * n[1] + placeLeft;
+        out[2] = yaw;
     }
 
     /**
@@ -229,14 +250,18 @@ public final class WalkGenerator {
     }
 
     private FootTarget foot(double[] p, boolean isLeft) {
+        return new FootTarget(p[0], p[1] - sway, lift(isLeft), p[2]);
+    }
+
+    private double lift(boolean isLeft) {
         boolean swinging = walking && isLeft == leftSwings;
-        return new FootTarget(p[0], p[1] - sway, swinging ? lift : 0, p[2]);
+        return swinging ? lift : 0;
     }
 
     private void computeTargets() {
         Arrays.fill(targets, 0);
-        leg(foot(left, true), true);
-        leg(foot(right, false), false);
+        leg(left, true);
+        leg(right, false);
         // arms hang slightly forward and out; each swings with the opposite leg
         double n = c.footForward();
         targets[Joint.LAJ1.ordinal()] = -80 + c.armSwingDeg() * (right[0] - n);
@@ -245,25 +270,20 @@ public final class WalkGenerator {
         targets[Joint.RAJ2.ordinal()] = -8;
         targets[Joint.LAJ4.ordinal()] = -30;
         targets[Joint.RAJ4.ordinal()] = 30;
-        for (Joint j : Joint.values()) targets[j.ordinal()] = JointLimits.clamp(j, targets[j.ordinal()]);
+        for (Joint j : JOINTS) targets[j.ordinal()] = JointLimits.clamp(j, targets[j.ordinal()]);
     }
 
-    private void leg(FootTarget f, boolean isLeft) {
+    /** The leg's six targets for a foot's ground pose p, as {@link #foot} would give its FootTarget. */
+    private void leg(double[] p, boolean isLeft) {
         double legHeight = c.legExtension() * (g.thigh() + g.shank());
         // ankle relative to the torso centre, horizontal frame (x right, y forward, z up)
-        double x = -f.left(), y = f.forward(), z = -(g.hipBelowTorso() + legHeight) + f.lift();
+        double x = -(p[1] - sway), y = p[0], z = -(g.hipBelowTorso() + legHeight) + lift(isLeft);
         // into the torso frame, pitched forward by the lean: Rx(lean)
         double lean = Math.toRadians(c.torsoLeanDeg()), co = Math.cos(lean), si = Math.sin(lean);
         double ty = co * y - si * z, tz = si * y + co * z;
         double hipX = (isLeft ? -1 : 1) * g.hipHalfWidth();
-        FootPoseIk.Angles q = FootPoseIk.solve(g, isLeft, x - hipX, ty, tz + g.hipBelowTorso(), f.yawDeg(), c.torsoLeanDeg());
-        int base = (isLeft ? Joint.LLJ1 : Joint.RLJ1).ordinal();
-        targets[base] = q.yawPitch();
-        targets[base + 1] = q.hipRoll();
-        targets[base + 2] = q.hipPitch();
-        targets[base + 3] = q.knee();
-        targets[base + 4] = q.anklePitch();
-        targets[base + 5] = q.ankleRoll();
+        int base = (isLeft ? Joint.LLJ1 : Joint.RLJ1).ordinal();   // lj1..lj6 in FootPoseIk.Angles' order
+        ik.solveInto(g, isLeft, x - hipX, ty, tz + g.hipBelowTorso(), p[2], c.torsoLeanDeg(), targets, base);
     }
 
     private static double ratio(double v, double max) { return max == 0 ? 0 : v / max; }
