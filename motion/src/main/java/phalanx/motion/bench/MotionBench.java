@@ -149,7 +149,7 @@ public final class MotionBench {
         cycles++;
         // the bench's own cycle clock, not the server's float time: in a server that ran freely it advances
         // in steps of 1/64 s and would stretch or shorten every phase by up to 20 %
-        JointVelocities v = controller.step(simTime(), last.joints(), request);
+        JointVelocities v = controller.step(simTime(), last.joints(), last.acc(), request);
         v = v.with(Joint.HJ1, 0.2 * Math.sin(cycles * 0.2));
         out.reset();
         v.appendTo(out).syn();
