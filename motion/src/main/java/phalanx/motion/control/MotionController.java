@@ -115,8 +115,15 @@ public final class MotionController {
         return new JointVelocities(out);
     }
 
-    /** The playing motion's name, or null when idle. */
-    public String playing() { return playing == null ? null : playing.name(); }
+    /**
+     * The name of the request being played, or null when idle. After a check's switch this is still
+     * the motion that was requested (the switched one plays as its continuation; the agent's one-shot
+     * tracking sees one play); {@link #playingMotion()} names the one whose phases play.
+     */
+    public String playing() { return playing == null ? null : requestedAs; }
+
+    /** The motion whose phases are playing (differs from {@link #playing()} after a switch), or null. */
+    public String playingMotion() { return playing == null ? null : playing.name(); }
 
     /** The playing phase's (or pose's) name, or null when idle. */
     public String segment() {
@@ -131,7 +138,7 @@ public final class MotionController {
     /** How many motions have played to their end (aborted ones do not count). */
     public long completions() { return completions; }
 
-    /** The motion that ended last, or null. */
+    /** The request that ended last (its name as requested, also after a switch), or null. */
     public String lastCompleted() { return lastCompleted; }
 
     private double phaseVelocity(Joint j, JointAngles current, int remainingCycles) {
@@ -198,7 +205,7 @@ public final class MotionController {
         }
         if (nextIndex < 0) {
             completions++;
-            lastCompleted = playing.name();
+            lastCompleted = requestedAs;
             playing = null;
             return;
         }

@@ -101,7 +101,8 @@ class MotionControllerCheckTest {
         c.step(0.00, R, FACE_UP, r);
         assertEquals("front", c.playing());
         JointVelocities v = c.step(0.02, R, FACE_UP, r);
-        assertEquals("back", c.playing());
+        assertEquals("back", c.playingMotion());
+        assertEquals("front", c.playing(), "still the same request to the agent's one-shot tracking");
         assertEquals("Sit", c.segment());
         assertEquals(Math.toRadians(10) / 0.04, v.radPerSecond(Joint.LLJ3), 1e-9, "the switched motion's first phase plays at once");
         c.step(0.04, R, FACE_UP, r);                   // still requested as "front": not aborted, not finalized
@@ -112,8 +113,8 @@ class MotionControllerCheckTest {
         assertEquals(0, c.completions());
         c.step(0.08, R, FACE_UP, r);
         assertEquals(1, c.completions());
-        assertEquals("back", c.lastCompleted());
-        assertEquals("front", c.playing(), "requested again: the front get-up starts afresh");
+        assertEquals("front", c.lastCompleted(), "the request that ended");
+        assertEquals("front", c.playingMotion(), "requested again: the front get-up starts afresh");
     }
 
     @Test
