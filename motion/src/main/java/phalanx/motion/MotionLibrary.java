@@ -1,5 +1,8 @@
 package phalanx.motion;
 
+import phalanx.motion.phase.Check;
+import phalanx.motion.phase.Phase;
+import phalanx.motion.phase.PhaseMotion;
 import phalanx.motion.phase.PhaseMotionLoader;
 import phalanx.motion.webots.TextMotionLoader;
 
@@ -49,7 +52,23 @@ public final class MotionLibrary {
             Motion before = m.put(motion.name(), motion);
             if (before != null) throw new MotionFileException(f, 0, null, null, "a second motion named '" + motion.name() + "' (also " + before.source() + ")");
         }
+        checkSwitches(m);
         return new MotionLibrary(m);
+    }
+
+    /** A check's switch must name another loaded motion (a typo would otherwise surface mid-game). */
+    private static void checkSwitches(Map<String, Motion> m) throws MotionFileException {
+        for (Motion motion : m.values()) {
+            if (!(motion instanceof PhaseMotion pm)) continue;
+            for (Phase p : pm.phases()) {
+                Check c = p.check();
+                if (c == null || c.switchTo() == null) continue;
+                if (c.switchTo().equals(motion.name()) || !m.containsKey(c.switchTo())) {
+                    throw new MotionFileException(motion.source(), c.line(), "phase '" + p.name() + "'", "check/switch",
+                            "'" + c.switchTo() + "' is not another motion of this folder (have " + m.keySet() + ")", null);
+                }
+            }
+        }
     }
 
     /** The motion with this name, or null. */

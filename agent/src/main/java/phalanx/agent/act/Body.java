@@ -55,7 +55,7 @@ public final class Body {
             return v;
         }
         keyframeUsed = true;
-        return keyframes.step(p.time(), p.joints(), Locomotion.request(wanted == null ? move : Move.STAND));
+        return keyframes.step(p.time(), p.joints(), p.acc(), Locomotion.request(wanted == null ? move : Move.STAND));
     }
 
     /** Share of the walk's backward speed limit for {@link Move.StepBack}: a few centimetres, not a retreat. */

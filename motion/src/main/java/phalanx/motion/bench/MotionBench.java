@@ -149,7 +149,7 @@ public final class MotionBench {
         cycles++;
         // the bench's own cycle clock, not the server's float time: in a server that ran freely it advances
         // in steps of 1/64 s and would stretch or shorten every phase by up to 20 %
-        JointVelocities v = controller.step(simTime(), last.joints(), request);
+        JointVelocities v = controller.step(simTime(), last.joints(), last.acc(), request);
         v = v.with(Joint.HJ1, 0.2 * Math.sin(cycles * 0.2));
         out.reset();
         v.appendTo(out).syn();
@@ -158,7 +158,7 @@ public final class MotionBench {
             MonitorScene.Pose p = torso();
             double[] b = ball();
             if (p != null) System.err.printf(Locale.ROOT, "  t=%.2f %s/%s pos=(%.3f %.3f %.3f) yaw=%.1f up=%.2f fwdZ=%.2f ball=(%.2f %.2f) legs L %.0f/%.0f/%.0f R %.0f/%.0f/%.0f%n", last.time(),
-                    controller.playing(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(), b == null ? 0 : b[0], b == null ? 0 : b[1],
+                    controller.playingMotion(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(), b == null ? 0 : b[0], b == null ? 0 : b[1],
                     last.joints().degrees(Joint.LLJ3), last.joints().degrees(Joint.LLJ4), last.joints().degrees(Joint.LLJ5),
                     last.joints().degrees(Joint.RLJ3), last.joints().degrees(Joint.RLJ4), last.joints().degrees(Joint.RLJ5));
         }

@@ -2,10 +2,12 @@ package phalanx.motion.control;
 
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.JointAngles;
+import phalanx.comm.perception.Vector3;
 import phalanx.motion.Motion;
 import phalanx.motion.MotionConfig;
 import phalanx.motion.MotionLibrary;
 import phalanx.motion.kinematics.JointLimits;
+import phalanx.motion.phase.Check;
 import phalanx.motion.phase.Phase;
 import phalanx.motion.phase.PhaseMotion;
 import phalanx.motion.webots.TextMotion;
@@ -29,6 +31,10 @@ import java.util.logging.Logger;
  * one cycle after the reading it answers (recordings README), so the reading lags by one command
  * ({@link MotionConfig#latencyCycles()}; 0 gives the thesis's formula unchanged).
  *
+ * <p>A phase with a {@link Check} tests the torso's orientation (the accelerometer) when it ends and,
+ * when the torso is not where the motion expects it, goes to the check's else phase (once per
+ * play) or switches to another motion, which then plays as the continuation of the same request.
+ *
  * <p>Values in, values out: time is the caller's (server time in seconds), no clock, no socket.
  * One instance per player; not thread-safe.
  */
@@ -44,6 +50,9 @@ public final class MotionController {
     private final Set<String> warnedUnknown = new HashSet<>();
 
     private Motion playing;          // null when idle
+    private String requestedAs;      // the request that started this play (differs from playing after a check's switch)
+    private boolean[] elseTaken = new boolean[0]; // per phase: its check's else already taken in this play
+    private Vector3 acc;             // this cycle's accelerometer reading, null when none
     private int index;               // phase or pose index
     private double segmentStart;     // server time the phase/pose started
     private int segmentCycles;       // its length in cycles
@@ -63,6 +72,15 @@ public final class MotionController {
      * request. Returns the hinge velocities to send in reply (rad/s, within the speed cap).
      */
     public JointVelocities step(double now, JointAngles current, MotionRequest request) {
+        return step(now, current, null, request);
+    }
+
+    /**
+     * One cycle with the accelerometer reading ({@code acc}, m/s², server torso frame; null when
+     * none), which the phases' torso checks test. Without a reading every check passes.
+     */
+    public JointVelocities step(double now, JointAngles current, Vector3 acc, MotionRequest request) {
+        this.acc = acc;
         // A message without a time, or one that does not come after the last: count it as the next
         // cycle. (The server's clock is a float: after 2^18 s of a free-running server it no longer
         // moves by 0.02 s, seen on rcssserver3d 0.7.3 left running without agents.)
@@ -73,7 +91,7 @@ public final class MotionController {
             if (warnedUnknown.add(wanted)) LOG.warning("no motion named '" + wanted + "' (have " + library.names() + "); standing still");
             wanted = null;
         }
-        if (playing != null && request.interrupt() && !playing.name().equals(wanted)) {
+        if (playing != null && request.interrupt() && !requestedAs.equals(wanted)) {
             playing = null; // aborted, not completed
         }
         if (playing != null) advance(now, wanted, request);
@@ -98,8 +116,15 @@ public final class MotionController {
         return new JointVelocities(out);
     }
 
-    /** The playing motion's name, or null when idle. */
-    public String playing() { return playing == null ? null : playing.name(); }
+    /**
+     * The name of the request being played, or null when idle. After a check's switch this is still
+     * the motion that was requested (the switched one plays as its continuation; the agent's one-shot
+     * tracking sees one play); {@link #playingMotion()} names the one whose phases play.
+     */
+    public String playing() { return playing == null ? null : requestedAs; }
+
+    /** The motion whose phases are playing (differs from {@link #playing()} after a switch), or null. */
+    public String playingMotion() { return playing == null ? null : playing.name(); }
 
     /** The playing phase's (or pose's) name, or null when idle. */
     public String segment() {
@@ -114,7 +139,7 @@ public final class MotionController {
     /** How many motions have played to their end (aborted ones do not count). */
     public long completions() { return completions; }
 
-    /** The motion that ended last, or null. */
+    /** The request that ended last (its name as requested, also after a switch), or null. */
     public String lastCompleted() { return lastCompleted; }
 
     private double phaseVelocity(Joint j, JointAngles current, int remainingCycles) {
@@ -130,7 +155,13 @@ public final class MotionController {
     private int elapsedCycles(double now) { return (int) Math.round((now - segmentStart) / dt); }
 
     private void start(Motion m, double now, MotionRequest request) {
+        requestedAs = m.name();
+        play(m, now, request);
+    }
+
+    private void play(Motion m, double now, MotionRequest request) {
         playing = m;
+        elseTaken = m instanceof PhaseMotion pm ? new boolean[pm.phases().size()] : new boolean[0];
         finalizing = false;
         index = m instanceof PhaseMotion pm ? pm.first() : 0;
         enter(now, request);
@@ -139,7 +170,7 @@ public final class MotionController {
     /** Ends the phase or pose whose time is up, moving on as 4.5.2 / 4.5.4 say. */
     private void advance(double now, String wanted, MotionRequest request) {
         if (elapsedCycles(now) < segmentCycles) return;
-        boolean same = playing.name().equals(wanted);
+        boolean same = requestedAs.equals(wanted);
         int nextIndex;
         if (playing instanceof PhaseMotion pm) {
             Phase p = pm.phase(index);
@@ -152,6 +183,20 @@ public final class MotionController {
                 }
             } else {
                 nextIndex = p.next();
+                Check c = p.check();
+                if (c != null && !c.passes(acc)) {
+                    if (c.elsePhase() >= 0 && !elseTaken[index]) {
+                        elseTaken[index] = true;
+                        nextIndex = c.elsePhase();
+                        LOG.info(pm.name() + ": phase " + p.name() + " found the torso's " + c.axis() + " share at "
+                                + String.format(java.util.Locale.ROOT, "%.2f", c.axis().share(acc)) + ", going to " + pm.phase(nextIndex).name());
+                    } else if (c.switchTo() != null && library.get(c.switchTo()) != null) {
+                        LOG.info(pm.name() + ": phase " + p.name() + " found the torso's " + c.axis() + " share at "
+                                + String.format(java.util.Locale.ROOT, "%.2f", c.axis().share(acc)) + ", switching to " + c.switchTo());
+                        play(library.get(c.switchTo()), now, request);
+                        return;
+                    }
+                }
             }
         } else {
             TextMotion tm = (TextMotion) playing;
@@ -161,7 +206,7 @@ public final class MotionController {
         }
         if (nextIndex < 0) {
             completions++;
-            lastCompleted = playing.name();
+            lastCompleted = requestedAs;
             playing = null;
             return;
         }

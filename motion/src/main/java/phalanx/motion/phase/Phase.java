@@ -20,14 +20,20 @@ public final class Phase {
     private final int next;
     private final int finalizeTo;
     private final Swing swing;
+    private final Check check;
 
     Phase(String name, double[] targetsDeg, int durationMs, int next, int finalizeTo, Swing swing) {
+        this(name, targetsDeg, durationMs, next, finalizeTo, swing, null);
+    }
+
+    Phase(String name, double[] targetsDeg, int durationMs, int next, int finalizeTo, Swing swing, Check check) {
         this.name = name;
         this.targetsDeg = targetsDeg;
         this.durationMs = durationMs;
         this.next = next;
         this.finalizeTo = finalizeTo;
         this.swing = swing;
+        this.check = check;
     }
 
     public String name() { return name; }
@@ -37,6 +43,8 @@ public final class Phase {
     /** Index of the phase to go to when finalizing from here, or -1. */
     public int finalizeTo() { return finalizeTo; }
     public Swing swing() { return swing; }
+    /** The torso check tested when this phase ends, or null. */
+    public Check check() { return check; }
     public boolean lists(Joint j) { return !Double.isNaN(targetsDeg[j.ordinal()]); }
     /** Target in degrees, NaN for a joint this phase does not list. */
     public double targetDeg(Joint j) { return targetsDeg[j.ordinal()]; }
@@ -48,6 +56,6 @@ public final class Phase {
     }
 
     @Override public String toString() {
-        return "Phase[" + name + ", " + durationMs + " ms, " + targets() + ", next=" + next + ", finalize=" + finalizeTo + "]";
+        return "Phase[" + name + ", " + durationMs + " ms, " + targets() + ", next=" + next + ", finalize=" + finalizeTo + (check == null ? "" : ", " + check) + "]";
     }
 }

@@ -31,6 +31,7 @@ import java.util.Set;
  *     &lt;effectors&gt;&lt;llj3&gt;20&lt;/llj3&gt;...&lt;/effectors&gt;  targets in degrees (hj1.. or he1.. names)
  *     &lt;duration&gt;120&lt;/duration&gt;                   milliseconds, &gt; 0
  *     &lt;finalize&gt;Final&lt;/finalize&gt;                 optional
+ *     &lt;check axis="forward" min="-1" max="0.5" else="Phase" | switch="motion"/&gt;   optional
  *   &lt;/phase&gt; ...
  * &lt;/motion&gt;
  * </pre>
@@ -38,7 +39,8 @@ import java.util.Set;
 public final class PhaseMotionLoader {
     private static final XmlFactory XML = new XmlFactory();
     private static final Set<String> ROOT_FIELDS = Set.of("first", "description", "phase");
-    private static final Set<String> PHASE_FIELDS = Set.of("name", "next", "finalize", "swing", "effectors", "duration");
+    private static final Set<String> PHASE_FIELDS = Set.of("name", "next", "finalize", "swing", "effectors", "duration", "check");
+    private static final Set<String> CHECK_FIELDS = Set.of("axis", "min", "max", "else", "switch");
 
     private PhaseMotionLoader() {}
 
@@ -197,7 +199,49 @@ public final class PhaseMotionLoader {
             if (!Double.isNaN(targets[joint.ordinal()])) throw new MotionFileException(source, j.line, part, field, "joint " + joint.perceptorName() + " listed twice", null);
             targets[joint.ordinal()] = v;
         }
-        return new Phase(phaseName, targets, duration, next, fin, swing);
+        return new Phase(phaseName, targets, duration, next, fin, swing, check(source, pn, part, index));
+    }
+
+    /** The optional torso check (see {@link Check}): axis, a range within [-1, 1], and else (a phase) or switch (a motion). */
+    private static Check check(String source, XmlNode pn, String part, Map<String, Integer> index) throws MotionFileException {
+        XmlNode c = single(source, pn, "check", part);
+        if (c == null) return null;
+        if (c.isLeaf()) throw new MotionFileException(source, c.line, part, "check", "needs axis, min and/or max, and else or switch", null);
+        for (XmlNode f : c.children) {
+            if (!CHECK_FIELDS.contains(f.name)) throw new MotionFileException(source, f.line, part, "check/" + f.name, "unknown field (expected " + sorted(CHECK_FIELDS) + ")", null);
+        }
+        XmlNode a = single(source, c, "axis", part);
+        if (a == null) throw new MotionFileException(source, c.line, part, "check/axis", "missing (right, forward or up)", null);
+        String as = leafText(source, a, part).toLowerCase(Locale.ROOT);
+        Check.Axis axis = switch (as) {
+            case "right" -> Check.Axis.RIGHT;
+            case "forward" -> Check.Axis.FORWARD;
+            case "up" -> Check.Axis.UP;
+            default -> throw new MotionFileException(source, a.line, part, "check/axis", "'" + as + "' is not right, forward or up", null);
+        };
+        XmlNode mn = single(source, c, "min", part), mx = single(source, c, "max", part);
+        if (mn == null && mx == null) throw new MotionFileException(source, c.line, part, "check", "give min or max (a share of up in [-1, 1]); without them the check always passes", null);
+        double min = share(source, mn, part, "check/min", -1), max = share(source, mx, part, "check/max", 1);
+        if (min > max) throw new MotionFileException(source, c.line, part, "check", "min " + min + " is above max " + max, null);
+        int elsePhase = link(source, c, "else", part, index);
+        XmlNode sw = single(source, c, "switch", part);
+        String switchTo = sw == null ? null : leafText(source, sw, part);
+        if (switchTo != null && switchTo.isEmpty()) throw new MotionFileException(source, sw.line, part, "check/switch", "empty (name a motion)", null);
+        if ((elsePhase >= 0) == (switchTo != null)) throw new MotionFileException(source, c.line, part, "check", "give exactly one of else (a phase of this file) and switch (another motion)", null);
+        return new Check(axis, min, max, elsePhase, switchTo, c.line);
+    }
+
+    private static double share(String source, XmlNode n, String part, String field, double absent) throws MotionFileException {
+        if (n == null) return absent;
+        String t = leafText(source, n, part);
+        double v;
+        try {
+            v = Double.parseDouble(t);
+        } catch (NumberFormatException e) {
+            throw new MotionFileException(source, n.line, part, field, "'" + t + "' is not a number", null);
+        }
+        if (!(v >= -1 && v <= 1)) throw new MotionFileException(source, n.line, part, field, t + " is outside [-1, 1] (a share of up along the axis)", null);
+        return v;
     }
 
     private static int link(String source, XmlNode pn, String field, String part, Map<String, Integer> index) throws MotionFileException {
