@@ -35,6 +35,13 @@ package phalanx.motion.walk;
  * @param accelForward       forward acceleration limit, m/s²
  * @param accelLeft          sideways acceleration limit, m/s²
  * @param accelTurnDeg       turn acceleration limit, deg/s²
+ * @param decelForward       forward deceleration limit (slowing toward zero), m/s²: a turn in place
+ *                           asked at full speed waits for the forward speed to drop
+ * @param turnAtFullSpeedDeg turn rate allowed at maxForward; the allowed rate rises linearly to
+ *                           maxTurnDeg at zero forward speed, and a request turning faster gets the
+ *                           forward speed at which its turn is allowed (maxTurnDeg = no coupling).
+ *                           Applied to the walk's own velocity, so a turn asked while still fast
+ *                           grows only as the walk slows down (the game's walk/turn alternation)
  * @param maxFootYawDeg      largest yaw of a foot relative to the torso (outward only)
  * @param servoGain          share of the remaining joint error commanded per cycle (1 = reach
  *                           the target in one cycle, as the keyframe controller does)
@@ -59,7 +66,8 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
                          double swingMatchGround, double swingLinear, double legExtension,
                          double footForward, double stanceWidth, double torsoLeanDeg, double swayAmplitude,
                          double swayLead, double maxForward, double maxBackward, double maxLeft, double maxTurnDeg,
-                         double accelForward, double accelLeft, double accelTurnDeg, double maxFootYawDeg,
+                         double accelForward, double accelLeft, double accelTurnDeg, double decelForward,
+                         double turnAtFullSpeedDeg, double maxFootYawDeg,
                          double servoGain, double gyroPitchGain, double gyroRollGain, double gyroYawGain,
                          double tiltPlaceForward, double tiltPlaceLeft, double tiltHipPitch, double armSwingDeg,
                          double odometryForward, double odometryLeft, double odometryTurn) {
@@ -74,8 +82,9 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
             0.12, 0.0, 0.021, 1.0, 0.4, 0.0,
             // posture: legExtension, footForward, stanceWidth, torsoLeanDeg, swayAmplitude, swayLead
             0.88, -0.01, 0.0, 6.0, 0.007, 0.0,
-            // limits: maxForward, maxBackward, maxLeft, maxTurnDeg, accelForward, accelLeft, accelTurnDeg, maxFootYawDeg
-            0.88, 0.4, 0.1, 90, 0.4, 1.0, 200, 40,
+            // limits: maxForward, maxBackward, maxLeft, maxTurnDeg, accelForward, accelLeft, accelTurnDeg,
+            // decelForward, turnAtFullSpeedDeg, maxFootYawDeg
+            0.88, 0.4, 0.1, 90, 0.4, 1.0, 200, 0.8, 0, 40,
             // feedback: servoGain, gyroPitchGain, gyroRollGain, gyroYawGain, tiltPlaceForward, tiltPlaceLeft, tiltHipPitch
             1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
             // armSwingDeg; odometry scales forward, left, turn
@@ -117,6 +126,8 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
         range(accelForward, 1e-3, 100, "accelForward");
         range(accelLeft, 1e-3, 100, "accelLeft");
         range(accelTurnDeg, 1e-3, 10000, "accelTurnDeg");
+        range(decelForward, 1e-3, 100, "decelForward");
+        range(turnAtFullSpeedDeg, 0, 720, "turnAtFullSpeedDeg");
         range(maxFootYawDeg, 0, 80, "maxFootYawDeg");
         range(servoGain, 0.05, 1.5, "servoGain");
         range(gyroPitchGain, -1, 1, "gyroPitchGain");

@@ -23,7 +23,8 @@ import java.util.Arrays;
  * only ever moves outward of its neutral pose (feet never cross, and each hip yaw-pitch joint,
  * which can only turn its foot outward, has room). The torso sways over the stance foot with a
  * sine over each step. Speeds are clamped to the config's limits (jointly, as an ellipsoid) and
- * changed by at most the acceleration limits per cycle.
+ * changed by at most the acceleration (deceleration) limits per cycle; the turn rate is further
+ * limited by the walk's own forward speed ({@link WalkConfig#turnAtFullSpeedDeg()}).
  *
  * <p>Zero request: the walk keeps stepping until the velocity is zero and both feet are back at
  * neutral, then stands (no lift, no sway) until a non-zero request.
@@ -97,9 +98,13 @@ public final class WalkGenerator {
             // the leading foot first when moving sideways or turning
             leftSwings = want[1] != 0 ? want[1] > 0 : want[2] >= 0;
         }
-        vf += clampAbs(want[0] - vf, c.accelForward() * dt);
+        double wf = want[0] > 0 ? Math.min(want[0], forwardAllowed(want[2])) : want[0];
+        boolean slowing = (vf > 0 && wf < vf) || (vf < 0 && wf > vf);
+        vf += clampAbs(wf - vf, (slowing ? c.decelForward() : c.accelForward()) * dt);
         vl += clampAbs(want[1] - vl, c.accelLeft() * dt);
         vt += clampAbs(want[2] - vt, c.accelTurnDeg() * dt);
+        double turnCap = turnAllowed(vf);
+        vt = clampAbs(vt, turnCap);
         double df = vf * dt, dl = vl * dt, dTheta = vt * dt;
         odometry = new Odometry(df * c.odometryForward(), dl * c.odometryLeft(), dTheta * c.odometryTurn());
 
@@ -191,6 +196,20 @@ public final class WalkGenerator {
         out[1] = l;
         out[2] = th;
         return out;
+    }
+
+    /** The turn rate allowed at a forward speed: maxTurnDeg standing, turnAtFullSpeedDeg at maxForward, linear between. */
+    double turnAllowed(double forward) {
+        if (forward <= 0 || c.maxForward() == 0) return c.maxTurnDeg();
+        double share = Math.min(1, forward / c.maxForward());
+        return c.maxTurnDeg() - (c.maxTurnDeg() - Math.min(c.turnAtFullSpeedDeg(), c.maxTurnDeg())) * share;
+    }
+
+    /** The forward speed at which a turn rate is allowed (the inverse of {@link #turnAllowed}). */
+    double forwardAllowed(double turnDeg) {
+        double full = Math.min(c.turnAtFullSpeedDeg(), c.maxTurnDeg()), a = Math.abs(turnDeg);
+        if (a <= full) return c.maxForward();
+        return c.maxForward() * Math.max(0, c.maxTurnDeg() - a) / (c.maxTurnDeg() - full);
     }
 
     private void neutral(boolean isLeft, double[] pose) {

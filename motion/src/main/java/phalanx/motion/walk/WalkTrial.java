@@ -99,9 +99,72 @@ public final class WalkTrial {
                                 type, dir > 0 ? "left" : "right", dir * c.maxLeft(), r.left() / r.seconds(), r.seconds(), r.forward(), r.turnDeg(), fall(r));
                     }
                 }
+                case "mixed" -> mixed(c);
                 default -> throw new IllegalStateException(s);
             }
         }
+    }
+
+    /**
+     * The mixed scenario: per start one seeded {@link MixedCommands} sequence of
+     * {@code --mixed-seconds}, walked from the centre spot. A fall is counted, the robot is set up
+     * again where it lay (same heading, fresh walk, 1.5 s of standing not counted) and the sequence
+     * goes on with its next request. Falls per minute of walking and the path covered (torso
+     * positions 0.5 s apart) per start and in total.
+     */
+    private void mixed(WalkConfig c) throws IOException {
+        int falls = 0;
+        double seconds = 0, path = 0;
+        for (int k = 0; k < opt.starts(); k++) {
+            long seed = opt.seed() + k;
+            java.util.List<MixedCommands.Segment> seq = MixedCommands.generate(seed, opt.mixedSeconds(), c);
+            double heading = 90.0 * k;
+            place(c, 0, 0, heading);
+            if (fallen()) place(c, 0, 0, heading);
+            int n = 0, fallsHere = 0;
+            double len = 0;
+            MonitorScene.Pose mark = torso();
+            MixedCommands.Segment before = null;
+            for (MixedCommands.Segment s : seq) {
+                int cyclesHere = (int) Math.round(s.seconds() / 0.02);
+                for (int i = 0; i < cyclesHere; i++) {
+                    cycle(s.request());
+                    n++;
+                    if (n % 25 == 0) {
+                        MonitorScene.Pose p = torso();
+                        len += Math.hypot(p.x() - mark.x(), p.y() - mark.y());
+                        mark = p;
+                    }
+                    if (fallen()) {
+                        fallsHere++;
+                        MonitorScene.Pose p = torso();
+                        len += Math.hypot(p.x() - mark.x(), p.y() - mark.y());
+                        System.out.printf(Locale.ROOT, "type %d mixed seed %d: FELL at %.2f s, %.2f s into %s after %s; walk at (%.2f, %.2f, %.0f)%n",
+                                type, seed, n * 0.02, i * 0.02, s, before, walk.velocity().forward(), walk.velocity().left(), walk.velocity().turnDeg());
+                        double x = Math.max(-20, Math.min(20, p.x())), y = Math.max(-20, Math.min(20, p.y()));
+                        place(c, x, y, p.yawDeg());
+                        if (fallen()) place(c, x, y, p.yawDeg());
+                        mark = torso();
+                        break;
+                    }
+                    MonitorScene.Pose p = torso();
+                    if (Math.abs(p.x()) > 22 || Math.abs(p.y()) > 22) {   // near the walls: back to the centre, same heading
+                        len += Math.hypot(p.x() - mark.x(), p.y() - mark.y());
+                        place(c, 0, 0, p.yawDeg());
+                        mark = torso();
+                    }
+                }
+                before = s;
+            }
+            double secs = n * 0.02;
+            System.out.printf(Locale.ROOT, "type %d mixed    start %d seed %d: %d falls in %.1f s (%.2f /min), path %.1f m (%.2f m/s), %d requests%n",
+                    type, k + 1, seed, fallsHere, secs, fallsHere * 60 / secs, len, len / secs, seq.size());
+            falls += fallsHere;
+            seconds += secs;
+            path += len;
+        }
+        System.out.printf(Locale.ROOT, "type %d mixed    total seeds %d-%d: %d falls in %.1f s = %.2f falls/min, path %.1f m (%.2f m/s)%n",
+                type, opt.seed(), opt.seed() + opt.starts() - 1, falls, seconds, falls * 60 / seconds, path, path / seconds);
     }
 
     private static String fall(Result r) {

@@ -16,23 +16,30 @@ import java.util.Map;
  * @param rounds      coordinate-descent rounds (each halves the steps)
  * @param searchSeconds length of one forward trial of the search
  * @param starts      forward trials are repeated from this many start points 0.7 m apart (the
- *                    server is deterministic: only another start gives another outcome)
+ *                    server is deterministic: only another start gives another outcome); mixed
+ *                    trials run this many sequences, seeds {@code seed}, {@code seed + 1}, ...
+ * @param seed        first seed of the mixed scenario's request sequence ({@link MixedCommands})
+ * @param mixedSeconds length of one mixed trial
  */
 public record WalkTrialOptions(String host, int port, int monitorPort, List<Integer> types, List<String> scenarios,
                                Map<String, Double> set, Map<String, Double> search, int rounds, double searchSeconds,
-                               double turnSeconds, double sideSeconds, int starts) {
+                               double turnSeconds, double sideSeconds, int starts, long seed, double mixedSeconds) {
 
-    public static final List<String> SCENARIOS = List.of("forward10", "forward60", "turn", "side");
+    public static final List<String> SCENARIOS = List.of("forward10", "forward60", "turn", "side", "mixed");
+    /** What runs without --scenarios (mixed is asked for by name: a minute per start and type). */
+    public static final List<String> DEFAULT_SCENARIOS = List.of("forward10", "forward60", "turn", "side");
     public static final String USAGE = "usage: walk-bench [--host 127.0.0.1] [--port 3100] [--monitor-port 3200] [--type 0,2,4]"
             + " [--scenarios forward10,forward60,turn,side] [--set field=value,...] [--search field:step,...]"
-            + " [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10] [--starts 1]";
+            + " [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10] [--starts 1]"
+            + " [--seed 1] [--mixed-seconds 60]";
 
     public static WalkTrialOptions parse(String... args) {
         String host = "127.0.0.1";
         int port = 3100, monitorPort = 3200, rounds = 3, starts = 1;
-        double searchSeconds = 15, turnSeconds = 10, sideSeconds = 10;
+        long seed = 1;
+        double searchSeconds = 15, turnSeconds = 10, sideSeconds = 10, mixedSeconds = 60;
         List<Integer> types = List.of(0, 2, 4);
-        List<String> scenarios = SCENARIOS;
+        List<String> scenarios = DEFAULT_SCENARIOS;
         Map<String, Double> set = new LinkedHashMap<>(), search = new LinkedHashMap<>();
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
@@ -47,6 +54,8 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
                 case "--starts" -> starts = (int) BenchFlags.number(flag, v, 1, 10, true);
                 case "--search-seconds" -> searchSeconds = BenchFlags.number(flag, v, 2, 600, false);
                 case "--turn-seconds" -> turnSeconds = BenchFlags.number(flag, v, 1, 600, false);
+                case "--seed" -> seed = (long) BenchFlags.number(flag, v, 0, 1e9, true);
+                case "--mixed-seconds" -> mixedSeconds = BenchFlags.number(flag, v, 1, 3600, false);
                 case "--side-seconds" -> sideSeconds = BenchFlags.number(flag, v, 1, 600, false);
                 case "--type" -> types = BenchFlags.types(flag, v);
                 case "--scenarios" -> {
@@ -63,7 +72,7 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
             }
         }
         return new WalkTrialOptions(host, port, monitorPort, types, scenarios, Map.copyOf(set), java.util.Collections.unmodifiableMap(search),
-                rounds, searchSeconds, turnSeconds, sideSeconds, starts);
+                rounds, searchSeconds, turnSeconds, sideSeconds, starts, seed, mixedSeconds);
     }
 
     /** The default walk config with the {@code --set} overrides; a bad field or value gets its message. */

@@ -17,7 +17,8 @@ class WalkGeneratorTest {
         return WalkConfig.DEFAULT.with("torsoLeanDeg", 0).with("swayAmplitude", 0).with("legExtension", 0.20 / 0.22)
                 .with("footForward", 0).with("stanceWidth", 0).with("stepSeconds", 0.12).with("doubleSupport", 0.1)
                 .with("maxForward", 0.8).with("maxLeft", 0.3).with("maxTurnDeg", 90).with("maxBackward", 0.4)
-                .with("accelForward", 1.0).with("accelLeft", 1.0).with("accelTurnDeg", 200);
+                .with("accelForward", 1.0).with("accelLeft", 1.0).with("accelTurnDeg", 200)
+                .with("decelForward", 1.0).with("turnAtFullSpeedDeg", 90);   // no speed/turn coupling: see turnRateIsLimitedByTheWalksOwnForwardSpeed
     }
 
     @Test
@@ -76,6 +77,43 @@ class WalkGeneratorTest {
             assertTrue(v.forward() <= 0.8 && v.forward() >= -0.4 && Math.abs(v.left()) <= 0.3 && Math.abs(v.turnDeg()) <= 90);
             prev = v;
         }
+    }
+
+    @Test
+    void turnRateIsLimitedByTheWalksOwnForwardSpeed() {
+        // at 0.8 m/s only 10 deg/s; 90 deg/s standing; linear between: allowed = 90 - 80·vf/0.8
+        WalkConfig c = plain().with("turnAtFullSpeedDeg", 10).with("decelForward", 2.0);
+        WalkGenerator w = new WalkGenerator(c, G, DT);
+        assertEquals(90, w.turnAllowed(0), 1e-12);
+        assertEquals(50, w.turnAllowed(0.4), 1e-12);
+        assertEquals(10, w.turnAllowed(0.8), 1e-12);
+        assertEquals(90, w.turnAllowed(-0.2), 1e-12);        // stepping back: no coupling
+        assertEquals(0.8, w.forwardAllowed(-10), 1e-12);
+        assertEquals(0.4, w.forwardAllowed(50), 1e-12);
+        assertEquals(0, w.forwardAllowed(90), 1e-12);
+        for (int i = 0; i < 60; i++) w.step(new WalkVelocity(0.8, 0, 0));
+        assertEquals(0.8, w.velocity().forward(), 1e-12);
+        // a turn in place asked at full speed: forward drops by decelForward·0.02 = 0.04 per cycle,
+        // the turn only grows as far as the forward speed of the cycle allows
+        for (int i = 1; i <= 20; i++) {
+            w.step(new WalkVelocity(0, 0, 90));
+            double vf = Math.max(0, 0.8 - 0.04 * i);
+            assertEquals(vf, w.velocity().forward(), 1e-9);
+            assertTrue(Math.abs(w.velocity().turnDeg()) <= 90 - 100 * vf + 1e-9, "cycle " + i + ": " + w.velocity());
+        }
+        for (int i = 0; i < 25; i++) w.step(new WalkVelocity(0, 0, 90));
+        assertEquals(new WalkVelocity(0, 0, 90), w.velocity());
+        // full speed with a 50 deg/s lean: the ellipsoid makes it (0.8k, 50k), k = 1/sqrt(1 + (50/90)²);
+        // the walk then goes at the speed where 50k deg/s is allowed
+        double k = 1 / Math.sqrt(1 + Math.pow(50.0 / 90, 2)), vf = 0.8 * (90 - 50 * k) / 80;
+        for (int i = 0; i < 100; i++) w.step(new WalkVelocity(0.8, 0, 50));
+        assertEquals(vf, w.velocity().forward(), 1e-9);
+        assertEquals(50 * k, w.velocity().turnDeg(), 1e-9);
+        // slowing uses decelForward (2 m/s² = 0.04 per cycle), speeding up accelForward (0.02)
+        w.step(new WalkVelocity(0.8, 0, 0));
+        assertEquals(vf + 0.02, w.velocity().forward(), 1e-9);
+        w.step(new WalkVelocity(0.1, 0, 0));
+        assertEquals(vf - 0.02, w.velocity().forward(), 1e-9);
     }
 
     @Test

@@ -17,7 +17,9 @@ class WalkTrialOptionsTest {
         assertEquals(3100, o.port());
         assertEquals(3200, o.monitorPort());
         assertEquals(List.of(0, 2, 4), o.types());
-        assertEquals(WalkTrialOptions.SCENARIOS, o.scenarios());
+        assertEquals(WalkTrialOptions.DEFAULT_SCENARIOS, o.scenarios());
+        assertEquals(1, o.seed());
+        assertEquals(60, o.mixedSeconds());
         assertEquals(WalkConfig.DEFAULT, o.config());
     }
 
@@ -33,6 +35,10 @@ class WalkTrialOptionsTest {
         assertEquals(0.01, o.search().get("stepHeight"));
         assertEquals(2, o.rounds());
         assertEquals(3, o.starts());
+        WalkTrialOptions m = WalkTrialOptions.parse("--scenarios", "mixed", "--seed", "7", "--mixed-seconds", "30");
+        assertEquals(List.of("mixed"), m.scenarios());
+        assertEquals(7, m.seed());
+        assertEquals(30, m.mixedSeconds());
     }
 
     @Test
@@ -50,6 +56,9 @@ class WalkTrialOptionsTest {
         assertTrue(error("--search", "stepSeconds:-1").contains("--search stepSeconds must be in"));
         assertTrue(error("--bogus", "1").contains("unknown flag '--bogus'"));
         assertTrue(error("--starts", "0").contains("--starts must be in"));
+        assertTrue(error("--seed", "-1").contains("--seed must be in"));
+        assertTrue(error("--seed", "one").contains("--seed needs a whole number, got 'one'"));
+        assertTrue(error("--mixed-seconds", "0").contains("--mixed-seconds must be in"));
         assertTrue(error("--help").startsWith("usage: walk-bench"));
     }
 }
