@@ -26,8 +26,8 @@ public final class KeeperTest {
               COMMAND as for scripts/match ({host} {port} {dir}): a team that attacks (FC Portugal; the UT Austin
               Villa base code only plays its demo circle). Each condition is played N times (default 1),
               one half of 300 s unless --halves/--half-time say otherwise.
-              --restarts N a game that never kicked off (FC Portugal's sync start stalls the server about 2 times
-                           in 9, docs/matches.md) is set aside as <condition>-NN.stallK and played again, up to
+              --restarts N a game that stalled within its first game second (FC Portugal's sync start stalls the
+                           server about 2 times in 9, docs/matches.md) is set aside as <condition>-NN.stallK and played again, up to
                            N times (default 2)
               --out DIR    results (<condition>-NN.json), match logs, table.md (default /tmp/phalanx-keeper/<time>)
             """ + MatchOptions.HELP;
@@ -88,7 +88,7 @@ public final class KeeperTest {
                         System.out.println(Tournament.progressLine(g, games, r));
                         if (!neverKickedOff(r) || attempt > restarts) break;
                         setAside(out, tag, attempt);
-                        System.out.println("keeper-test: " + tag + " never kicked off; set aside as " + tag + ".stall" + attempt
+                        System.out.println("keeper-test: " + tag + " stalled in its first game second; set aside as " + tag + ".stall" + attempt
                                 + ", playing it again (" + attempt + " of " + restarts + ")");
                     }
                 }
@@ -104,9 +104,12 @@ public final class KeeperTest {
         }
     }
 
-    /** A game that ended before its first kick-off: the start failed, the keeper was never tested. */
+    /**
+     * A game that stalled before its first game second: the start failed and the keeper was never tested
+     * (FC Portugal's stalls come at game time 0.0 or 0.04, right at the kick-off).
+     */
     static boolean neverKickedOff(MatchResult r) {
-        return !r.completed() && !(r.gameTime() > 0);
+        return !r.completed() && !(r.gameTime() >= 1.0);
     }
 
     /** Renames a failed start's result and logs out of the report's way ({@code <tag>.stallK[.json]}). */

@@ -46,6 +46,7 @@ class KeeperTestTest {
     @Test
     void aStartThatNeverKickedOffIsSetAsideAndLeavesTheTable() throws IOException {
         assertTrue(KeeperTest.neverKickedOff(half("StillKeeper", true, 0, false, 0.0)), "stalled at game time 0");
+        assertTrue(KeeperTest.neverKickedOff(half("StillKeeper", true, 0, false, 0.04)), "stalled at the kick-off (seen)");
         assertFalse(KeeperTest.neverKickedOff(half("StillKeeper", true, 2, false, 120.0)), "stalled mid-game: a result to report");
         assertFalse(KeeperTest.neverKickedOff(half("StillKeeper", true, 4, true)));
         half("StillKeeper", true, 0, false, 0.0).write(dir.resolve("still-01.json"));
