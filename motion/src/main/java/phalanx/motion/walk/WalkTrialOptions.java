@@ -10,7 +10,8 @@ import java.util.Map;
 /**
  * Command line of scripts/walk-bench. Every bad flag gets a message naming it.
  *
- * @param scenarios   which trials: forward10, forward60, turn, side (in that order when listed)
+ * @param scenarios   which trials: forward10, forward60, turn, side, mixed (in the order listed; mixed
+ *                    only when named)
  * @param set         config fields to override, {@code name=value}
  * @param search      fields to tune by coordinate descent, with their first step: {@code name:step}
  * @param rounds      coordinate-descent rounds (each halves the steps)
@@ -29,7 +30,7 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
     /** What runs without --scenarios (mixed is asked for by name: a minute per start and type). */
     public static final List<String> DEFAULT_SCENARIOS = List.of("forward10", "forward60", "turn", "side");
     public static final String USAGE = "usage: walk-bench [--host 127.0.0.1] [--port 3100] [--monitor-port 3200] [--type 0,2,4]"
-            + " [--scenarios forward10,forward60,turn,side] [--set field=value,...] [--search field:step,...]"
+            + " [--scenarios forward10,forward60,turn,side,mixed] [--set field=value,...] [--search field:step,...]"
             + " [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10] [--starts 1]"
             + " [--seed 1] [--mixed-seconds 60]";
 
