@@ -17,24 +17,32 @@ import java.util.Locale;
  * over time while the speed is above 0.1 m/s, and the "rolling fraction": the speed at 0.5 s over
  * v0·e^(−k·0.5) (a ball set moving without spin slides first and rolls on with part of its speed;
  * 5/7 for an ideal sphere). The last line: {@code ball_decay_k=... (fit mean)}.
+ * <p>{@code --lift VZ} launches every ball with an upward speed as well (a lofted kick): the lines then
+ * also give the highest point and the distance at the first landing, which is what a strong kick
+ * needs to know (motion/README.md "Kicks and dives").
  */
 public final class BallDecayBench {
     private BallDecayBench() {}
 
-    record Sample(double t, double x, double y) {}
+    record Sample(double t, double x, double y, double z) {
+        Sample(double t, double x, double y) { this(t, x, y, RADIUS); }
+    }
 
-    /** The command line: monitor host and port, start speeds (m/s), seconds followed per run. */
-    record Options(String host, int port, double[] speeds, double seconds) {}
+    static final double RADIUS = 0.042;
+
+    /** The command line: monitor host and port, start speeds (m/s), seconds followed per run, upward start speed. */
+    record Options(String host, int port, double[] speeds, double seconds, double lift) {}
 
     /** Parses the flags; a bad one throws IllegalArgumentException naming it. */
     static Options parse(String... args) {
         String host = "127.0.0.1";
         int port = 3200;
         double[] speeds = {1, 2, 4, 6};
-        double seconds = 8;
+        double seconds = 8, lift = 0;
         for (int i = 0; i < args.length; i += 2) {
             String a = args[i];
-            if (!a.equals("--host") && !a.equals("--monitor-port") && !a.equals("--speeds") && !a.equals("--seconds")) {
+            if (!a.equals("--host") && !a.equals("--monitor-port") && !a.equals("--speeds") && !a.equals("--seconds")
+                    && !a.equals("--lift")) {
                 throw new IllegalArgumentException("unknown option '" + a + "'");
             }
             if (i + 1 >= args.length) throw new IllegalArgumentException(a + " needs a value");
@@ -48,6 +56,7 @@ public final class BallDecayBench {
                         speeds = new double[p.length];
                         for (int k = 0; k < p.length; k++) speeds[k] = Double.parseDouble(p[k]);
                     }
+                    case "--lift" -> lift = Double.parseDouble(v);
                     default -> seconds = Double.parseDouble(v);
                 }
             } catch (NumberFormatException e) {
@@ -59,7 +68,8 @@ public final class BallDecayBench {
             if (!(v > 0 && v <= 20)) throw new IllegalArgumentException("--speeds must be within (0, 20] m/s, got " + v);
         }
         if (!(seconds > 0 && seconds <= 60)) throw new IllegalArgumentException("--seconds must be within (0, 60], got " + seconds);
-        return new Options(host, port, speeds, seconds);
+        if (!(lift >= 0 && lift <= 20)) throw new IllegalArgumentException("--lift must be within [0, 20] m/s, got " + lift);
+        return new Options(host, port, speeds, seconds, lift);
     }
 
     public static void main(String[] args) throws IOException {
@@ -78,13 +88,18 @@ public final class BallDecayBench {
             double sumK = 0;
             for (int i = 0; i < o.speeds().length; i++) {
                 double v0 = o.speeds()[i];
-                List<Sample> run = roll(mon, scene, v0, i % 2 == 0 ? 0.5 : -0.5, o.seconds());
+                List<Sample> run = roll(mon, scene, v0, o.lift(), i % 2 == 0 ? 0.5 : -0.5, o.seconds());
                 double d = run.get(run.size() - 1).x() - run.get(0).x();
                 double kFit = fit(run);
                 sumK += kFit;
                 double rolling = speedAt(run, 0.5) / (v0 * Math.exp(-kFit * 0.5));
-                System.out.printf(Locale.ROOT, "v0=%.2f samples=%d distance_m=%.3f k_from_distance=%.3f k_fit=%.3f rolling_fraction=%.3f%n",
+                System.out.printf(Locale.ROOT, "v0=%.2f samples=%d distance_m=%.3f k_from_distance=%.3f k_fit=%.3f rolling_fraction=%.3f",
                         v0, run.size(), d, v0 / d, kFit, rolling);
+                if (o.lift() > 0) {
+                    System.out.printf(Locale.ROOT, " vz=%.2f top_m=%.3f first_landing_m=%.3f",
+                            o.lift(), top(run), firstLanding(run));
+                }
+                System.out.println();
             }
             System.out.printf(Locale.ROOT, "ball_decay_k=%.3f%n", sumK / o.speeds().length);
         }
@@ -95,9 +110,9 @@ public final class BallDecayBench {
         scene.apply(mon.reader().text());
     }
 
-    private static List<Sample> roll(ServerConnection mon, MonitorScene scene, double v0, double y, double seconds)
+    private static List<Sample> roll(ServerConnection mon, MonitorScene scene, double v0, double vz, double y, double seconds)
             throws IOException {
-        mon.send(String.format(Locale.ROOT, "(ball (pos -8 %.1f 0.042)(vel %.3f 0 0))", y, v0));
+        mon.send(String.format(Locale.ROOT, "(ball (pos -8 %.1f 0.042)(vel %.3f 0 %.3f))", y, v0, vz));
         // Wait for the scene to show the ball on its new line (runs alternate y = ±0.5: a fast ball
         // is already well past x = -8 in the first picture).
         do next(mon, scene); while (Math.abs(scene.ball()[1] - y) > 0.05 || scene.ball()[0] > -6);
@@ -105,10 +120,30 @@ public final class BallDecayBench {
         double t0 = scene.time();
         while (scene.time() - t0 < seconds) {
             double[] b = scene.ball();
-            out.add(new Sample(scene.time(), b[0], b[1]));
+            out.add(new Sample(scene.time(), b[0], b[1], b[2]));
             next(mon, scene);
         }
         return out;
+    }
+
+    /** The ball centre's highest point above the ground (m). */
+    static double top(List<Sample> run) {
+        double top = 0;
+        for (Sample s : run) top = Math.max(top, s.z() - RADIUS);
+        return top;
+    }
+
+    /**
+     * Distance from the start where the ball first comes back to the ground after having risen 5 cm
+     * (NaN if it never rose or never came down within the run).
+     */
+    static double firstLanding(List<Sample> run) {
+        boolean up = false;
+        for (Sample s : run) {
+            if (!up && s.z() - RADIUS > 0.05) up = true;
+            else if (up && s.z() - RADIUS < 0.01) return Math.hypot(s.x() - run.get(0).x(), s.y() - run.get(0).y());
+        }
+        return Double.NaN;
     }
 
     /** Mean speed over the 0.1 s after {@code after} seconds from the run's start; NaN if the run is shorter. */

@@ -40,6 +40,25 @@ class BallDecayBenchTest {
         assertBad("--speeds needs numbers, got '1,a'", "--speeds", "1,a");
         assertBad("--speeds must be within (0, 20] m/s, got -1.0", "--speeds", "-1");
         assertBad("--seconds must be within (0, 60], got 0.0", "--seconds", "0");
+        assertBad("--lift must be within [0, 20] m/s, got -2.0", "--lift", "-2");
+        assertEquals(0, o.lift());
+        assertEquals(3.5, BallDecayBench.parse("--lift", "3.5").lift());
+    }
+
+    @Test
+    void aLoftedRunsTopAndFirstLanding() {
+        // a ball thrown up at 4 m/s and forward at 5 m/s without drag: top 4²/(2g), lands at 5·(2·4/g)
+        List<BallDecayBench.Sample> run = new ArrayList<>();
+        double g = 9.81, r = BallDecayBench.RADIUS;
+        for (int i = 0; i <= 150; i++) {
+            double t = i * 0.01, z = Math.max(0, 4 * t - g * t * t / 2);
+            run.add(new BallDecayBench.Sample(t, -8 + 5 * t, 0.5, r + z));
+        }
+        assertEquals(16 / (2 * g), BallDecayBench.top(run), 0.01);
+        assertEquals(5 * 8 / g, BallDecayBench.firstLanding(run), 0.06);
+        List<BallDecayBench.Sample> rolling = new ArrayList<>();
+        for (int i = 0; i < 50; i++) rolling.add(new BallDecayBench.Sample(i * 0.04, i * 0.1, 0));
+        assertTrue(Double.isNaN(BallDecayBench.firstLanding(rolling)));
     }
 
     private static void assertBad(String message, String... args) {

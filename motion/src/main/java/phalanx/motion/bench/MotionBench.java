@@ -105,6 +105,11 @@ public final class MotionBench {
 
     private double[] ball() { return rig.ball(); }
 
+    private void sample(BallLaunch launch) {
+        double[] tb = rig.scene(s -> { double[] b = s.ball(); return b == null ? null : new double[] {s.time(), b[0], b[1], b[2]}; });
+        if (tb != null) launch.add(tb[0], tb[1], tb[2], tb[3]);
+    }
+
     // --- the player -----------------------------------------------------------------------------
 
     private Row measure(int type) throws IOException {
@@ -310,9 +315,15 @@ public final class MotionBench {
         double[] b0 = ball();
         long done = controller.completions();
         boolean fell = false;
+        BallLaunch launch = new BallLaunch();
         for (int i = 0; i < 250 && controller.completions() == done; i++) {
             cycle(onceRequest(motion, false));
             fell |= fallen();
+            sample(launch);
+        }
+        for (int i = 0; i < 25; i++) { // the ball's first half second after the motion, for its launch speed
+            hold(1);
+            sample(launch);
         }
         double[] prev = ball();
         for (int i = 0; i < 400; i++) { // until the ball stops (at most 8 s), the robot standing at least 1 s
@@ -326,7 +337,8 @@ public final class MotionBench {
         double dx = b1[0] - b0[0], dy = b1[1] - b0[1];
         double dist = Math.hypot(dx, dy);
         double err = dist < 0.05 ? Double.NaN : Math.toDegrees(Math.atan2(Math.sin(Math.atan2(dy, dx) - h), Math.cos(Math.atan2(dy, dx) - h)));
-        System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s%n", motion, dist, err, fell ? ", fell" : "");
+        System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s, launch %.2f m/s, up %.2f m/s%n",
+                motion, dist, err, fell ? ", fell" : "", launch.speed(), launch.up());
         return new double[] {dist, Math.abs(err), fell ? 1 : 0}; // the next place() stands it up again
     }
 
