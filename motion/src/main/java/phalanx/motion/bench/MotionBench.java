@@ -105,8 +105,13 @@ public final class MotionBench {
 
     private double[] ball() { return rig.ball(); }
 
+    /**
+     * The ball's place in the latest monitor picture, timed by the picture's number at one picture a cycle
+     * ({@code $monitorStep = 0.02}, as the bench requires): the server's own float clock stops advancing
+     * in a server that ran freely between bench runs (docs/protocol.md).
+     */
     private void sample(BallLaunch launch) {
-        double[] tb = rig.scene(s -> { double[] b = s.ball(); return b == null ? null : new double[] {s.time(), b[0], b[1], b[2]}; });
+        double[] tb = rig.scene(s -> { double[] b = s.ball(); return b == null ? null : new double[] {s.messages() * 0.02, b[0], b[1], b[2]}; });
         if (tb != null) launch.add(tb[0], tb[1], tb[2], tb[3]);
     }
 
