@@ -87,7 +87,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         public static final Kick DEFAULT = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
 
         /**
-         * Type 4 (toes): strong_kick.xml moves the ball 1.1 m median against 3.45 m for kick.xml
+         * Type 4 (toes): strong_kick.xml moves the ball 0.4 m median on that type against 6.2 m on type 0
          * (motion/README.md "Kicks"), so that type never uses the strong kick.
          */
         public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, Double.POSITIVE_INFINITY, 4.0, 0);

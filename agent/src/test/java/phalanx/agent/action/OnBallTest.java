@@ -120,7 +120,7 @@ class OnBallTest {
 
     @Test
     void typeFourNeverUsesTheStrongKick() {
-        // 20 m from the goal: type 0 takes the strong kick, type 4 (whose strong kick goes 1.1 m) the normal one.
+        // 20 m from the goal: type 0 takes the strong kick, type 4 (whose strong kick goes 0.4 m) the normal one.
         assertEquals(new Move.Kick(true), new OnBall(AgentConfig.forRobotType(0)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
         assertEquals(new Move.Kick(false), new OnBall(AgentConfig.forRobotType(4)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
     }
