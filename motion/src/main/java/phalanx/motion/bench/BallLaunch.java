@@ -12,14 +12,13 @@ final class BallLaunch {
 
     /** One monitor picture: its time (s) and the ball centre (m). A picture of the same time is ignored. */
     void add(double time, double bx, double by, double bz) {
-        if (!Double.isNaN(t) && time > t) {
+        if (!Double.isNaN(t)) {
+            if (time <= t) return;
             double dt = time - t;
             speed = Math.max(speed, Math.hypot(bx - x, by - y) / dt);
             up = Math.max(up, (bz - z) / dt);
         }
-        if (Double.isNaN(t) || time > t) {
-            t = time; x = bx; y = by; z = bz;
-        }
+        t = time; x = bx; y = by; z = bz;
     }
 
     /** Highest horizontal ball speed seen, m/s. */
