@@ -67,7 +67,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     /**
      * @param spotX             the ball's place for a right-foot kick, forward of the torso (motions/README:
      *                          kick.xml and the motion bench put it 0.17 m ahead ...)
-     * @param spotY             ... and 0.055 m to the right
+     * @param spotY             ... and 0.055 m to the right (the left foot's kick_left.xml: mirrored)
      * @param toleranceX        Prepare For Kick accepts the ball up to this much nearer or farther than
      *                          spotX (ours; a nearer ball was kicked off the shin)
      * @param toleranceY        ... and this much to either side (ours)
@@ -91,6 +91,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
          * (motion/README.md "Kicks"), so that type never uses the strong kick.
          */
         public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.03, 0.025, 0.5, 2.5, 10, 45, Double.POSITIVE_INFINITY, 4.0, 0);
+
+        /** The spot's sideways offset for the left foot's kick (the mirror) or the right one's. */
+        public double spotY(boolean leftFoot) { return leftFoot ? -spotY : spotY; }
 
         public Kick withDribbleWithin(double metres) {
             return new Kick(spotX, spotY, toleranceX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,

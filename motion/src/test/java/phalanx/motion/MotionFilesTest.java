@@ -20,7 +20,7 @@ class MotionFilesTest {
         assertTrue(Files.isDirectory(DIR), "run from the project root: " + DIR.toAbsolutePath());
         MotionLibrary lib = MotionLibrary.load(DIR);
         for (String name : List.of("walk_forward", "side_step_left", "side_step_right", "turn_left", "turn_right",
-                "kick", "strong_kick", "stand_up_front", "stand_up_back", "dive_left", "dive_right")) {
+                "kick", "strong_kick", "kick_left", "strong_kick_left", "stand_up_front", "stand_up_back", "dive_left", "dive_right")) {
             assertNotNull(lib.get(name), "motions/ lacks " + name);
         }
         assertInstanceOf(TextMotion.class, lib.get("turn_left"), "turns are Webots text motions (4.5.3)");
@@ -37,6 +37,41 @@ class MotionFilesTest {
         // Mirror: the left turn's left hip yaw-pitch is the right turn's right hip yaw-pitch.
         int l = left.joints().indexOf(Joint.LLJ1), r = right.joints().indexOf(Joint.RLJ1);
         for (int p = 0; p < left.poseCount(); p++) assertEquals(left.targetDeg(p, l), right.targetDeg(p, r), 1e-3);
+    }
+
+    @Test
+    void leftFootKicksAndTheRightDiveAreExactMirrors() throws Exception {
+        MotionLibrary lib = MotionLibrary.load(DIR);
+        for (String[] pair : new String[][] {{"kick", "kick_left"}, {"strong_kick", "strong_kick_left"}, {"dive_left", "dive_right"}}) {
+            PhaseMotion a = (PhaseMotion) lib.get(pair[0]), b = (PhaseMotion) lib.get(pair[1]);
+            String what = pair[1] + " mirrors " + pair[0];
+            assertEquals(a.phases().size(), b.phases().size(), what);
+            assertEquals(a.first(), b.first(), what);
+            for (int i = 0; i < a.phases().size(); i++) {
+                var p = a.phase(i);
+                var q = b.phase(i);
+                assertEquals(List.of(p.name(), p.durationMs(), p.next(), p.finalizeTo()), List.of(q.name(), q.durationMs(), q.next(), q.finalizeTo()), what);
+                assertEquals(p.targets().size(), q.targets().size(), what + ", phase " + p.name());
+                for (var t : p.targets().entrySet()) {
+                    Joint j = t.getKey();
+                    assertTrue(q.lists(twin(j)), what + ": " + p.name() + " lists " + twin(j));
+                    assertEquals(mirrorSign(j) * t.getValue(), q.targetDeg(twin(j)), 1e-9, what + ": " + p.name() + " " + j);
+                }
+            }
+        }
+    }
+
+    /** The left-right twin of a joint (scripts/mirror-motion's rule). */
+    private static Joint twin(Joint j) {
+        String n = j.perceptorName();
+        char side = n.charAt(0);
+        return side == 'l' || side == 'r' ? Joint.byName((side == 'l' ? "r" : "l") + n.substring(1)) : j;
+    }
+
+    /** Rolls and yaws change sign in a mirror; pitches, knees, toes and the hip yaw-pitch do not. */
+    private static double mirrorSign(Joint j) {
+        String n = j.perceptorName();
+        return n.equals("hj1") || n.matches("[lr]lj[26]") || n.matches("[lr]aj[234]") ? -1 : 1;
     }
 
     @Test

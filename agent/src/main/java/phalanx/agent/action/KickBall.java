@@ -7,13 +7,14 @@ import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
 
 /**
- * One right-foot kick, played once to its end (On Ball's last step). Call {@link #start} when the
+ * One kick with either foot, played once to its end (On Ball's last step). Call {@link #start} when the
  * ball is in place; {@link #done} turns true when the motion has ended.
  */
 public final class KickBall implements Action {
     private final OneShot play;
     private final TrackObject track;
     private boolean strong;
+    private boolean left;
 
     public KickBall(AgentConfig config) {
         this.play = new OneShot(config.kick().oneShotTimeout());
@@ -21,15 +22,16 @@ public final class KickBall implements Action {
     }
 
     /** Begins a kick this cycle. */
-    public void start(Situation s, boolean strongKick) {
+    public void start(Situation s, boolean strongKick, boolean leftFoot) {
         strong = strongKick;
+        left = leftFoot;
         play.start(s);
     }
 
     @Override
     public Decision decide(Situation s) {
         if (!play.active() || play.finished(s)) return Decision.of(Move.STAND, track.head(s));
-        return Decision.of(play.requesting() ? new Move.Kick(strong) : Move.STAND, track.head(s));
+        return Decision.of(play.requesting() ? new Move.Kick(strong, left) : Move.STAND, track.head(s));
     }
 
     @Override

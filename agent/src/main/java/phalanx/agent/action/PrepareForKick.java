@@ -9,7 +9,9 @@ import phalanx.localization.field.Vector2;
 
 /**
  * 4.6.1 Prepare For Kick: side steps and slow forward steps, until the ball lies in front of the
- * right foot (the kick's spot) within the tolerances. Sideways first (a forward step with the ball
+ * kicking foot (the kick's spot) within the tolerances. Ours: the kicking foot is the one on the
+ * ball's side when preparing begins ({@link #chooseFoot}), so a ball left of the body needs no side
+ * steps across to the right foot; the left foot's spot is the right one's mirror. Sideways first (a forward step with the ball
  * off to the side would push it away), then forward. Ours, beyond the thesis: a ball nearer than
  * the spot's band (at the feet) is not kicked off the shin; the robot steps back first (a side step
  * there would push the ball with the foot).
@@ -17,11 +19,21 @@ import phalanx.localization.field.Vector2;
 public final class PrepareForKick implements Action {
     private final AgentConfig config;
     private final TrackObject track;
+    private boolean left;
 
     public PrepareForKick(AgentConfig config) {
         this.config = config;
         this.track = TrackObject.ball(config);
     }
+
+    /** Picks the foot whose spot is nearer the ball now, kept until the next call. */
+    public void chooseFoot(Situation s) {
+        Vector2 ball = Facts.ball(s, config);
+        left = ball != null && ball.y() > 0;
+    }
+
+    /** True when the kick is to be played with the left foot. */
+    public boolean leftFoot() { return left; }
 
     @Override
     public Decision decide(Situation s) {
@@ -29,7 +41,7 @@ public final class PrepareForKick implements Action {
         if (ball == null || ready(ball)) return Decision.of(Move.STAND, track.head(s));
         AgentConfig.Kick k = config.kick();
         if (ball.x() < k.spotX() - k.toleranceX()) return Decision.of(new Move.StepBack(), track.head(s));
-        double ey = ball.y() - k.spotY();
+        double ey = ball.y() - k.spotY(left);
         if (Math.abs(ey) > k.toleranceY()) return Decision.of(new Move.SideStep(ey > 0), track.head(s));
         return Decision.of(new Move.Walk(0, true), track.head(s));
     }
@@ -42,6 +54,6 @@ public final class PrepareForKick implements Action {
 
     private boolean ready(Vector2 ball) {
         AgentConfig.Kick k = config.kick();
-        return Math.abs(ball.x() - k.spotX()) <= k.toleranceX() && Math.abs(ball.y() - k.spotY()) <= k.toleranceY();
+        return Math.abs(ball.x() - k.spotX()) <= k.toleranceX() && Math.abs(ball.y() - k.spotY(left)) <= k.toleranceY();
     }
 }

@@ -32,8 +32,11 @@ public sealed interface Move {
     /** Small steps backward (Prepare For Kick, when the ball lies too close to the feet to kick). */
     record StepBack() implements Move {}
 
-    /** Kick with the right foot (the ball in front of it: Prepare for Kick); {@code strong} for the strong kick. */
-    record Kick(boolean strong) implements Move {}
+    /**
+     * Kick with the right foot, or the left one if {@code left} (the ball in front of that foot: Prepare
+     * for Kick); {@code strong} for the strong kick.
+     */
+    record Kick(boolean strong, boolean left) implements Move {}
 
     /** Get up; {@code fromFront} when lying face down. */
     record StandUp(boolean fromFront) implements Move {}

@@ -40,4 +40,12 @@ class BodyTest {
         assertTrue(forward > -0.2 * 2 - 1e-9, "no faster than half the backward limit: " + forward);
         assertEquals(phalanx.motion.control.MotionRequest.NONE, Locomotion.request(new Move.StepBack()));
     }
+
+    @Test
+    void kicksAreRequestedByTheFilesOfTheirFoot() {
+        assertEquals("kick", Locomotion.request(new Move.Kick(false, false)).motion());
+        assertEquals("strong_kick", Locomotion.request(new Move.Kick(true, false)).motion());
+        assertEquals("kick_left", Locomotion.request(new Move.Kick(false, true)).motion());
+        assertEquals("strong_kick_left", Locomotion.request(new Move.Kick(true, true)).motion());
+    }
 }

@@ -130,6 +130,22 @@ class BasicActionsTest {
     }
 
     @Test
+    void prepareForKickTakesTheFootOnTheBallsSideAndItsMirroredSpot() {
+        PrepareForKick p = new PrepareForKick(C);
+        // Ball 4 cm left of the body's axis when preparing begins: the left foot, whose spot is 0.055 m left.
+        p.chooseFoot(World.at(0, 0, 0).ballRel(0.25, 0.04).situation());
+        assertTrue(p.leftFoot());
+        assertEquals(new Move.SideStep(true), p.decide(World.at(0, 0, 0).ballRel(0.25, 0.09).situation()).move(), "3.5 cm too far left: step left");
+        assertEquals(new Move.Walk(0, true), p.decide(World.at(0, 0, 0).ballRel(0.25, 0.04).situation()).move(), "in the left band");
+        assertTrue(p.done(World.at(0, 0, 0).ballRel(0.17, 0.055).situation()));
+        assertFalse(p.done(World.at(0, 0, 0).ballRel(0.17, -0.055).situation()), "the right foot's spot is not the left one's");
+        // The choice is kept until the next call: a ball drifting right is stepped after, not switched to.
+        assertEquals(new Move.SideStep(false), p.decide(World.at(0, 0, 0).ballRel(0.25, -0.01).situation()).move());
+        p.chooseFoot(World.at(0, 0, 0).ballRel(0.25, -0.01).situation());
+        assertFalse(p.leftFoot());
+    }
+
+    @Test
     void prepareForKickStepsBackFromABallAtTheFeet() {
         PrepareForKick p = new PrepareForKick(C);
         var atFeet = World.at(0, 0, 0).ballRel(0.10, -0.055).situation();   // 7 cm short of the 0.17 m spot

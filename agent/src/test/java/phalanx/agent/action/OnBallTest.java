@@ -36,7 +36,7 @@ class OnBallTest {
 
         // 5. Ball at the right foot, 15 m from the goal: the strong kick, requested until it plays.
         World kick = World.at(0, 0, 0).ballRel(0.17, -0.055).time(15);
-        assertEquals(new Move.Kick(true), a.decide(kick.situation()).move());
+        assertEquals(new Move.Kick(true, false), a.decide(kick.situation()).move());
         assertEquals(OnBall.State.KICK, a.state());
         kick.motion("strong_kick", null, 0).time(15.04);
         assertEquals(Move.STAND, a.decide(kick.situation()).move(), "playing: not requested again");
@@ -113,15 +113,25 @@ class OnBallTest {
         assertTrue(m instanceof Move.Turn t && !t.left(), m.toString());
         assertEquals(OnBall.State.ALIGN, a.state());
         OnBall far = new OnBall(C);
-        assertEquals(new Move.Kick(true), far.decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
+        assertEquals(new Move.Kick(true, false), far.decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
         OnBall near = new OnBall(C);
-        assertEquals(new Move.Kick(false), near.decide(World.at(11, 0, 0).ballRel(0.17, -0.055).situation()).move());
+        assertEquals(new Move.Kick(false, false), near.decide(World.at(11, 0, 0).ballRel(0.17, -0.055).situation()).move());
+    }
+
+    @Test
+    void aBallLeftOfTheBodyIsKickedWithTheLeftFoot() {
+        OnBall a = new OnBall(C);
+        // Facing the goal 4 m out, ball 0.25 m ahead and 5 cm left: aligned, prepare with the left foot (forward step).
+        assertEquals(new Move.Walk(0, true), a.decide(World.at(10.8, 0, 0).ballRel(0.25, 0.05).situation()).move());
+        assertEquals(OnBall.State.PREPARE, a.state());
+        // At the left foot's spot: the normal kick (near the goal) with the left foot.
+        assertEquals(new Move.Kick(false, true), a.decide(World.at(10.9, 0, 0).ballRel(0.17, 0.055).time(1).situation()).move());
     }
 
     @Test
     void typeFourNeverUsesTheStrongKick() {
         // 20 m from the goal: type 0 takes the strong kick, type 4 (whose strong kick goes 0.4 m) the normal one.
-        assertEquals(new Move.Kick(true), new OnBall(AgentConfig.forRobotType(0)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
-        assertEquals(new Move.Kick(false), new OnBall(AgentConfig.forRobotType(4)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
+        assertEquals(new Move.Kick(true, false), new OnBall(AgentConfig.forRobotType(0)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
+        assertEquals(new Move.Kick(false, false), new OnBall(AgentConfig.forRobotType(4)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
     }
 }
