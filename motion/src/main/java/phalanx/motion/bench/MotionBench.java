@@ -175,6 +175,21 @@ public final class MotionBench {
     }
 
     /**
+     * {@code --trace} during a kick, every cycle: the phase, both legs' six joints (yaw-pitch, roll, pitch,
+     * knee, ankle pitch, ankle roll; degrees as perceived) and the ball, to read joint speeds at contact.
+     */
+    private void traceKick() {
+        double[] b = ball();
+        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "  kick c=%d %s ball=(%.3f %.3f %.3f)", cycles, controller.segment(),
+                b == null ? 0 : b[0], b == null ? 0 : b[1], b == null ? 0 : b[2]));
+        for (Joint first : new Joint[] {Joint.LLJ1, Joint.RLJ1}) {
+            sb.append(first == Joint.LLJ1 ? " L" : " R");
+            for (int j = 0; j < 6; j++) sb.append(String.format(Locale.ROOT, " %.1f", last.joints().degrees(Joint.byIndex(first.ordinal() + j))));
+        }
+        System.err.println(sb);
+    }
+
+    /**
      * Simulated seconds from our own cycle count (the server runs in sync mode, so no cycle is lost),
      * not from its float clock, which gets coarse in a server that has run long without agents.
      */
@@ -325,6 +340,7 @@ public final class MotionBench {
             cycle(onceRequest(motion, false));
             fell |= fallen();
             sample(launch);
+            if (opt.trace()) traceKick();
         }
         for (int i = 0; i < 25; i++) { // the ball's first half second after the motion, for its launch speed
             hold(1);
