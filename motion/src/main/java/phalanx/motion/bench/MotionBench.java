@@ -167,8 +167,9 @@ public final class MotionBench {
         if (opt.trace() && cycles % 5 == 0) {
             MonitorScene.Pose p = torso();
             double[] b = ball();
-            if (p != null) System.err.printf(Locale.ROOT, "  t=%.2f %s/%s pos=(%.3f %.3f %.3f) yaw=%.1f up=%.2f fwdZ=%.2f ball=(%.2f %.2f) legs L %.0f/%.0f/%.0f R %.0f/%.0f/%.0f%n", last.time(),
-                    controller.playingMotion(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(), b == null ? 0 : b[0], b == null ? 0 : b[1],
+            if (p != null) System.err.printf(Locale.ROOT, "  t=%.2f %s/%s pos=(%.3f %.3f %.3f) yaw=%.1f up=%.2f fwdZ=%.2f accFwd=%.2f ball=(%.2f %.2f) legs L %.0f/%.0f/%.0f R %.0f/%.0f/%.0f%n", last.time(),
+                    controller.playingMotion(), controller.segment(), p.x(), p.y(), p.z(), p.yawDeg(), p.upZ(), p.forwardZ(),
+                    phalanx.motion.phase.Check.Axis.FORWARD.share(last.acc()), b == null ? 0 : b[0], b == null ? 0 : b[1],
                     last.joints().degrees(Joint.LLJ3), last.joints().degrees(Joint.LLJ4), last.joints().degrees(Joint.LLJ5),
                     last.joints().degrees(Joint.RLJ3), last.joints().degrees(Joint.RLJ4), last.joints().degrees(Joint.RLJ5));
         }
@@ -329,7 +330,9 @@ public final class MotionBench {
         double h = Math.toRadians(p.yawDeg());
         double side = motion.endsWith("_left") ? -opt.ballSide() : opt.ballSide(); // to the right of the torso
         double bx = p.x() + opt.ballAhead() * Math.cos(h) + side * Math.sin(h), by = p.y() + opt.ballAhead() * Math.sin(h) - side * Math.cos(h);
-        trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042))", bx, by));
+        // (vel 0 0 0): a move keeps the ball's velocity, and the last kick's ball, still rolling at up to
+        // 1 cm/s when the bench took it as stopped, crept 1-2 cm off the spot before the next swing
+        trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042) (vel 0 0 0))", bx, by));
         hold(10);
         for (int i = 0; i < 100 && Math.hypot(ball()[0] - bx, ball()[1] - by) > 0.01; i++) hold(1); // the monitor may lag
         double[] b0 = ball();
