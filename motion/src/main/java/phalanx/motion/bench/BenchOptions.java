@@ -13,6 +13,8 @@ import java.util.List;
  *                    left foot and gets the ball on the left
  * @param ballAhead   kick trial: the ball's centre this far ahead of the torso centre (m)
  * @param ballSide    kick trial: and this far to the side of the kicking foot (m)
+ * @param ballJitter  kick trial: each trial moves the ball by up to this much ahead/back and to either side
+ *                    (uniform, seeded), as the agent's Prepare For Kick leaves it within its tolerance (m)
  * @param diveOffset  dive trial: the shot passes the keeper's centre this far to the diving side (m)
  * @param shotSeconds dive trial: the shot crosses the keeper's line this long after the dive request (s)
  * @param getupWalkSeconds after a get-up that stood, walk forward at full speed this long (0: no walk)
@@ -21,12 +23,12 @@ import java.util.List;
  */
 public record BenchOptions(String host, int port, int monitorPort, List<Integer> types, int trials,
                            double walkSeconds, double turnSeconds, Path motions, String only, boolean trace,
-                           List<String> kicks, double ballAhead, double ballSide, double diveOffset, double shotSeconds,
+                           List<String> kicks, double ballAhead, double ballSide, double ballJitter, double diveOffset, double shotSeconds,
                            double getupWalkSeconds, List<String> lying) {
 
     public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
             + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup|dive] [--trace]"
-            + " [--kicks kick,strong_kick] [--ball-ahead 0.17] [--ball-side 0.055] [--dive-offset 0.6] [--shot-seconds 0.8]"
+            + " [--kicks kick,strong_kick] [--ball-ahead 0.17] [--ball-side 0.055] [--ball-jitter 0] [--dive-offset 0.6] [--shot-seconds 0.8]"
             + " [--getup-walk 2] [--lying front,back,side,oblique]";
 
     public static BenchOptions parse(String... args) {
@@ -38,7 +40,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
         String only = null;
         boolean trace = false;
         List<String> kicks = List.of("kick", "strong_kick");
-        double ballAhead = 0.17, ballSide = 0.055, diveOffset = 0.6, shotSeconds = 0.8;
+        double ballAhead = 0.17, ballSide = 0.055, ballJitter = 0, diveOffset = 0.6, shotSeconds = 0.8;
         List<String> lying = List.of("front", "back", "side", "oblique");
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
@@ -76,6 +78,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 }
                 case "--ball-ahead" -> ballAhead = BenchFlags.number(flag, v, 0, 0.5, false);
                 case "--ball-side" -> ballSide = BenchFlags.number(flag, v, -0.2, 0.2, false);
+                case "--ball-jitter" -> ballJitter = BenchFlags.number(flag, v, 0, 0.05, false);
                 case "--dive-offset" -> diveOffset = BenchFlags.number(flag, v, 0, 2, false);
                 case "--shot-seconds" -> shotSeconds = BenchFlags.number(flag, v, 0.1, 3, false);
                 case "--type" -> types = BenchFlags.types(flag, v);
@@ -83,7 +86,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
             }
         }
         return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace,
-                kicks, ballAhead, ballSide, diveOffset, shotSeconds, getupWalk, lying);
+                kicks, ballAhead, ballSide, ballJitter, diveOffset, shotSeconds, getupWalk, lying);
     }
 
     public boolean runs(String what) { return only == null || only.equals(what); }

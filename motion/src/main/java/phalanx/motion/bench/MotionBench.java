@@ -329,7 +329,9 @@ public final class MotionBench {
         MonitorScene.Pose p = torso();
         double h = Math.toRadians(p.yawDeg());
         double side = motion.endsWith("_left") ? -opt.ballSide() : opt.ballSide(); // to the right of the torso
-        double bx = p.x() + opt.ballAhead() * Math.cos(h) + side * Math.sin(h), by = p.y() + opt.ballAhead() * Math.sin(h) - side * Math.cos(h);
+        double ahead = opt.ballAhead() + opt.ballJitter() * (2 * kickJitter.nextDouble() - 1);
+        side += opt.ballJitter() * (2 * kickJitter.nextDouble() - 1);
+        double bx = p.x() + ahead * Math.cos(h) + side * Math.sin(h), by = p.y() + ahead * Math.sin(h) - side * Math.cos(h);
         // (vel 0 0 0): a move keeps the ball's velocity, and the last kick's ball, still rolling at up to
         // 1 cm/s when the bench took it as stopped, crept 1-2 cm off the spot before the next swing
         trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042) (vel 0 0 0))", bx, by));
@@ -404,6 +406,7 @@ public final class MotionBench {
     }
 
     private final java.util.Random random = new java.util.Random(6);
+    private final java.util.Random kickJitter = new java.util.Random(7); // its own: get-up trials stay as they were
 
     /**
      * Tips the robot over (ankle pitch for forward/backward as in recording S3, ankle and hip roll

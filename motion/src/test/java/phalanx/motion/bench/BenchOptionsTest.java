@@ -22,11 +22,13 @@ class BenchOptionsTest {
         assertFalse(o.runs("walk"));
         assertEquals(List.of("kick", "strong_kick"), d.kicks());
         BenchOptions k = BenchOptions.parse("--only", "dive", "--kicks", "kick_left, strong_kick", "--ball-ahead", "0.2",
-                "--ball-side", "-0.01", "--dive-offset", "0.4", "--shot-seconds", "1.2");
+                "--ball-side", "-0.01", "--ball-jitter", "0.02", "--dive-offset", "0.4", "--shot-seconds", "1.2");
         assertTrue(k.runs("dive"));
         assertEquals(List.of("kick_left", "strong_kick"), k.kicks());
         assertEquals(0.2, k.ballAhead());
         assertEquals(-0.01, k.ballSide());
+        assertEquals(0.02, k.ballJitter());
+        assertEquals(0, d.ballJitter(), "the ball exactly on the spot unless asked");
         assertEquals(0.4, k.diveOffset());
         assertEquals(1.2, k.shotSeconds());
     }
@@ -42,6 +44,7 @@ class BenchOptionsTest {
         assertTrue(msg("--only", "dance").contains("--only must be"));
         assertTrue(msg("--kicks", ",").contains("--kicks needs at least one motion name"));
         assertTrue(msg("--ball-ahead", "1").contains("--ball-ahead must be in [0, 0.5], got 1"));
+        assertTrue(msg("--ball-jitter", "0.1").contains("--ball-jitter must be in [0, 0.05], got 0.1"));
         assertTrue(msg("--shot-seconds", "x").contains("--shot-seconds needs a number, got 'x'"));
         assertTrue(msg("--lying", "front,upside-down").contains("--lying takes front, back, side, oblique, got 'upside-down'"));
         assertTrue(msg("--getup-walk", "-1").contains("--getup-walk must be in [0, 60]"));
