@@ -67,7 +67,7 @@ public final class OnBall implements Action {
                     if (Double.isNaN(e)) { state = State.FIND_GOAL; return find.decide(s); }
                     if (Math.abs(e) > tolerance(s)) return orbit.step(s, ball, e);
                     state = dribbles(s) ? State.DRIBBLE : State.PREPARE;
-                    if (state == State.PREPARE) prepare.chooseFoot(s);
+                    if (state == State.PREPARE) prepare.choose(s, strong(s));
                 }
                 case DRIBBLE -> {
                     double toGoal = goalDirection(s);
@@ -80,7 +80,7 @@ public final class OnBall implements Action {
                     if (!Double.isNaN(e) && Math.abs(e) > 2 * tolerance(s)) { state = State.ALIGN; return orbit.step(s, ball, e); }
                     if (!prepare.done(s)) return prepare.decide(s);
                     state = State.KICK;
-                    kick.start(s, strong(s), prepare.leftFoot());
+                    kick.start(s, prepare.strong(), prepare.leftFoot());
                 }
                 case KICK -> {
                     if (!kick.done(s)) {

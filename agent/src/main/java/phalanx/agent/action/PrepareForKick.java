@@ -10,7 +10,7 @@ import phalanx.localization.field.Vector2;
 /**
  * 4.6.1 Prepare For Kick: side steps and slow forward steps, until the ball lies in front of the
  * kicking foot (the kick's spot) within the tolerances. Ours: the kicking foot is the one on the
- * ball's side when preparing begins ({@link #chooseFoot}), so a ball left of the body needs no side
+ * ball's side when preparing begins ({@link #choose}), so a ball left of the body needs no side
  * steps across to the right foot; the left foot's spot is the right one's mirror. Sideways first (a forward step with the ball
  * off to the side would push it away), then forward. Ours, beyond the thesis: a ball nearer than
  * the spot's band (at the feet) is not kicked off the shin; the robot steps back first (a side step
@@ -20,28 +20,36 @@ public final class PrepareForKick implements Action {
     private final AgentConfig config;
     private final TrackObject track;
     private boolean left;
+    private boolean strong;
 
     public PrepareForKick(AgentConfig config) {
         this.config = config;
         this.track = TrackObject.ball(config);
     }
 
-    /** Picks the foot whose spot is nearer the ball now, kept until the next call. */
-    public void chooseFoot(Situation s) {
+    /**
+     * Prepares for the strong or the normal kick (each has its spot) with the foot whose spot is nearer
+     * the ball now; both are kept until the next call.
+     */
+    public void choose(Situation s, boolean strongKick) {
         Vector2 ball = Facts.ball(s, config);
         left = ball != null && ball.y() > 0;
+        strong = strongKick;
     }
 
     /** True when the kick is to be played with the left foot. */
     public boolean leftFoot() { return left; }
+
+    /** True when preparing for the strong kick. */
+    public boolean strong() { return strong; }
 
     @Override
     public Decision decide(Situation s) {
         Vector2 ball = Facts.ball(s, config);
         if (ball == null || ready(ball)) return Decision.of(Move.STAND, track.head(s));
         AgentConfig.Kick k = config.kick();
-        if (ball.x() < k.spotX() - k.toleranceX()) return Decision.of(new Move.StepBack(), track.head(s));
-        double ey = ball.y() - k.spotY(left);
+        if (ball.x() < k.spotX(strong) - k.toleranceX()) return Decision.of(new Move.StepBack(), track.head(s));
+        double ey = ball.y() - k.spotY(strong, left);
         if (Math.abs(ey) > k.toleranceY()) return Decision.of(new Move.SideStep(ey > 0), track.head(s));
         return Decision.of(new Move.Walk(0, true), track.head(s));
     }
@@ -54,6 +62,6 @@ public final class PrepareForKick implements Action {
 
     private boolean ready(Vector2 ball) {
         AgentConfig.Kick k = config.kick();
-        return Math.abs(ball.x() - k.spotX()) <= k.toleranceX() && Math.abs(ball.y() - k.spotY(left)) <= k.toleranceY();
+        return Math.abs(ball.x() - k.spotX(strong)) <= k.toleranceX() && Math.abs(ball.y() - k.spotY(strong, left)) <= k.toleranceY();
     }
 }

@@ -133,7 +133,7 @@ class BasicActionsTest {
     void prepareForKickTakesTheFootOnTheBallsSideAndItsMirroredSpot() {
         PrepareForKick p = new PrepareForKick(C);
         // Ball 4 cm left of the body's axis when preparing begins: the left foot, whose spot is 0.055 m left.
-        p.chooseFoot(World.at(0, 0, 0).ballRel(0.25, 0.04).situation());
+        p.choose(World.at(0, 0, 0).ballRel(0.25, 0.04).situation(), false);
         assertTrue(p.leftFoot());
         assertEquals(new Move.SideStep(true), p.decide(World.at(0, 0, 0).ballRel(0.25, 0.09).situation()).move(), "3.5 cm too far left: step left");
         assertEquals(new Move.Walk(0, true), p.decide(World.at(0, 0, 0).ballRel(0.25, 0.04).situation()).move(), "in the left band");
@@ -141,8 +141,26 @@ class BasicActionsTest {
         assertFalse(p.done(World.at(0, 0, 0).ballRel(0.17, -0.055).situation()), "the right foot's spot is not the left one's");
         // The choice is kept until the next call: a ball drifting right is stepped after, not switched to.
         assertEquals(new Move.SideStep(false), p.decide(World.at(0, 0, 0).ballRel(0.25, -0.01).situation()).move());
-        p.chooseFoot(World.at(0, 0, 0).ballRel(0.25, -0.01).situation());
+        p.choose(World.at(0, 0, 0).ballRel(0.25, -0.01).situation(), false);
         assertFalse(p.leftFoot());
+    }
+
+    @Test
+    void theStrongKickIsPreparedForAtItsOwnSpot() {
+        AgentConfig.Kick k = C.kick();
+        assertNotEquals(k.spotX(false), k.spotX(true), "strong_kick.xml was tuned for another spot than kick.xml");
+        PrepareForKick p = new PrepareForKick(C);
+        var ball = World.at(0, 0, 0).ballRel(k.spotX(false) - 0.025, k.spotY(false, false)).situation();
+        p.choose(ball, false);
+        assertTrue(p.done(ball), "inside the normal kick's band");
+        p.choose(ball, true);
+        assertTrue(p.strong());
+        assertFalse(p.done(ball), "short of the strong kick's band");
+        assertEquals(new Move.StepBack(), p.decide(ball).move());
+        var right = World.at(0, 0, 0).ballRel(k.spotX(true), k.spotY(true, false)).situation();
+        assertTrue(p.done(right));
+        p.choose(World.at(0, 0, 0).ballRel(0.25, 0.03).situation(), true);
+        assertTrue(p.leftFoot() && p.done(World.at(0, 0, 0).ballRel(k.spotX(true), -k.spotY(true, false)).situation()), "the left foot's mirrored strong spot");
     }
 
     @Test

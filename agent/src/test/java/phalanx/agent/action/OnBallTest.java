@@ -130,7 +130,7 @@ class OnBallTest {
 
     @Test
     void typeFourNeverUsesTheStrongKick() {
-        // 20 m from the goal: type 0 takes the strong kick, type 4 (whose strong kick goes 0.4 m) the normal one.
+        // 20 m from the goal: type 0 takes the strong kick, type 4 (whose strong kick falls in 4 of 10) the normal one.
         assertEquals(new Move.Kick(true, false), new OnBall(AgentConfig.forRobotType(0)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
         assertEquals(new Move.Kick(false, false), new OnBall(AgentConfig.forRobotType(4)).decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
     }
