@@ -18,7 +18,9 @@ public final class Locomotion {
         if (move instanceof Move.Turn t) return MotionRequest.of(t.left() ? "turn_left" : "turn_right").withGain(t.gain());
         if (move instanceof Move.SideStep s) return MotionRequest.of(s.left() ? "side_step_left" : "side_step_right");
         if (move instanceof Move.StepBack) return MotionRequest.NONE; // no keyframe file: only the walk (Body) steps back
-        if (move instanceof Move.Kick k) return MotionRequest.of((k.strong() ? "strong_kick" : "kick") + (k.left() ? "_left" : ""));
+        if (move instanceof Move.Kick k) { // literals: no string built in the think cycle
+            return MotionRequest.of(k.strong() ? (k.left() ? "strong_kick_left" : "strong_kick") : (k.left() ? "kick_left" : "kick"));
+        }
         if (move instanceof Move.StandUp u) return MotionRequest.of(u.fromFront() ? "stand_up_front" : "stand_up_back").interrupting();
         if (move instanceof Move.Dive d) return MotionRequest.of(d.left() ? "dive_left" : "dive_right").interrupting();
         return MotionRequest.NONE; // Stand
