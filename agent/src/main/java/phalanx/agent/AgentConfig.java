@@ -96,10 +96,10 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
 
         /**
-         * Type 4 (toes): strong_kick.xml falls in 4 of 10 kicks on that type (none in 20 on types 0 and 2)
-         * (motion/README.md "Kicks"), so that type never uses the strong kick.
+         * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
+         * of 10 kicks on that type), tuned for this spot (motions/README.md, `scripts/kick-search params`).
          */
-        public static final Kick TYPE_4 = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.025, 0.5, 2.5, 10, 45, Double.POSITIVE_INFINITY, 4.0, 0);
+        public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.185, -0.035, 0.03, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
 
         /** The spot's distance ahead for the strong kick or the normal one. */
         public double spotX(boolean strong) { return strong ? strongSpotX : spotX; }

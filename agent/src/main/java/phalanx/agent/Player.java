@@ -94,7 +94,7 @@ public final class Player {
         if (!Files.isDirectory(o.motions())) {
             throw new IOException("no motion folder at " + o.motions().toAbsolutePath() + " (use --motions DIR)");
         }
-        MotionLibrary library = MotionLibrary.load(o.motions());
+        MotionLibrary library = MotionLibrary.load(o.motions(), o.robotType());
         BeliefStore beliefs = new BeliefStore(field, LocalizationConfig.DEFAULT, NaoBody.ofType(o.robotType()), o.team(), null, o.unum());
         RoboViz draw = o.roboviz() == null ? RoboViz.OFF : RoboViz.to(o.roboviz());
         ChannelConfig channel = ChannelConfig.DEFAULT.withPlayers(o.players());

@@ -36,6 +36,33 @@ public final class MotionLibrary {
 
     public static MotionLibrary load(Path dir) throws MotionFileException {
         if (!Files.isDirectory(dir)) throw new MotionFileException(dir, 0, null, null, "not a folder of motion files");
+        Map<String, Motion> m = read(dir);
+        checkSwitches(m);
+        return new MotionLibrary(m);
+    }
+
+    /**
+     * The folder's motions for one robot type: each file in {@code dir/type<N>/} replaces the folder's
+     * motion of the same name (a motion tuned for that body, motions/README.md). A file there that
+     * replaces nothing is an error, since a misspelt name would otherwise never be played.
+     */
+    public static MotionLibrary load(Path dir, int robotType) throws MotionFileException {
+        if (!Files.isDirectory(dir)) throw new MotionFileException(dir, 0, null, null, "not a folder of motion files");
+        Map<String, Motion> m = read(dir);
+        Path own = dir.resolve("type" + robotType);
+        if (Files.isDirectory(own)) {
+            for (Motion x : read(own).values()) {
+                if (m.replace(x.name(), x) == null) {
+                    throw new MotionFileException(x.source(), 0, null, null,
+                            "replaces no motion of " + dir + " (have " + m.keySet() + ")", null);
+                }
+            }
+        }
+        checkSwitches(m);
+        return new MotionLibrary(m);
+    }
+
+    private static Map<String, Motion> read(Path dir) throws MotionFileException {
         List<Path> files;
         try (Stream<Path> s = Files.list(dir)) {
             files = s.filter(Files::isRegularFile).sorted().toList();
@@ -52,8 +79,7 @@ public final class MotionLibrary {
             Motion before = m.put(motion.name(), motion);
             if (before != null) throw new MotionFileException(f, 0, null, null, "a second motion named '" + motion.name() + "' (also " + before.source() + ")");
         }
-        checkSwitches(m);
-        return new MotionLibrary(m);
+        return m;
     }
 
     /** A check's switch must name another loaded motion (a typo would otherwise surface mid-game). */

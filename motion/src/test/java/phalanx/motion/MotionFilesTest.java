@@ -41,10 +41,13 @@ class MotionFilesTest {
 
     @Test
     void leftFootKicksAndTheRightDiveAreExactMirrors() throws Exception {
-        MotionLibrary lib = MotionLibrary.load(DIR);
+        for (int type = 0; type <= 4; type++) assertMirrored(MotionLibrary.load(DIR, type)); // typeN/ files too
+    }
+
+    private static void assertMirrored(MotionLibrary lib) {
         for (String[] pair : new String[][] {{"kick", "kick_left"}, {"strong_kick", "strong_kick_left"}, {"dive_left", "dive_right"}}) {
             PhaseMotion a = (PhaseMotion) lib.get(pair[0]), b = (PhaseMotion) lib.get(pair[1]);
-            String what = pair[1] + " mirrors " + pair[0];
+            String what = b.source() + " mirrors " + a.source();
             assertEquals(a.phases().size(), b.phases().size(), what);
             assertEquals(a.first(), b.first(), what);
             for (int i = 0; i < a.phases().size(); i++) {
@@ -86,5 +89,27 @@ class MotionFilesTest {
         MotionFileException dup = assertThrows(MotionFileException.class, () -> MotionLibrary.load(tmp));
         assertTrue(dup.getMessage().contains("a second motion named 'good'"), dup.getMessage());
         assertThrows(MotionFileException.class, () -> MotionLibrary.load(tmp.resolve("nope")));
+    }
+
+    @Test
+    void aTypeFolderReplacesTheMotionsOfItsNamesForThatTypeOnly(@org.junit.jupiter.api.io.TempDir Path tmp) throws Exception {
+        Files.writeString(tmp.resolve("a.xml"), "<motion><phase name=\"A\"><effectors/><duration>20</duration></phase></motion>");
+        Files.writeString(tmp.resolve("b.xml"), "<motion><phase name=\"B\"><effectors/><duration>20</duration></phase></motion>");
+        Files.createDirectory(tmp.resolve("type4"));
+        Files.writeString(tmp.resolve("type4/a.xml"), "<motion><phase name=\"A\"><effectors/><duration>40</duration></phase></motion>");
+        PhaseMotion a4 = (PhaseMotion) MotionLibrary.load(tmp, 4).get("a");
+        assertEquals(40, a4.phase(0).durationMs());
+        assertEquals(20, ((PhaseMotion) MotionLibrary.load(tmp, 4).get("b")).phase(0).durationMs(), "b has no type 4 file");
+        assertEquals(20, ((PhaseMotion) MotionLibrary.load(tmp, 2).get("a")).phase(0).durationMs(), "type4/ is type 4's alone");
+        assertEquals(20, ((PhaseMotion) MotionLibrary.load(tmp).get("a")).phase(0).durationMs());
+        assertEquals(java.util.Set.of("a", "b"), MotionLibrary.load(tmp, 4).names());
+
+        Files.writeString(tmp.resolve("type4/c.xml"), "<motion><phase name=\"C\"><effectors/><duration>20</duration></phase></motion>");
+        MotionFileException typo = assertThrows(MotionFileException.class, () -> MotionLibrary.load(tmp, 4));
+        assertTrue(typo.getMessage().contains("c.xml") && typo.getMessage().contains("replaces no motion"), typo.getMessage());
+        Files.writeString(tmp.resolve("type4/c.xml"), "<motion><phase name=\"C\"><effectors/><duration>0</duration></phase></motion>");
+        MotionFileException bad = assertThrows(MotionFileException.class, () -> MotionLibrary.load(tmp, 4));
+        assertTrue(bad.getMessage().contains("c.xml") && bad.getMessage().contains("duration"), bad.getMessage());
+        assertNotNull(MotionLibrary.load(tmp, 0).get("a"), "another type never reads type4/");
     }
 }

@@ -27,7 +27,8 @@ import java.util.Locale;
  */
 public final class MotionBench {
     private final BenchOptions opt;
-    private final MotionLibrary library;
+    private final java.util.Map<Integer, MotionLibrary> libraries; // per robot type (motions/typeN/ files replace the folder's)
+    private MotionLibrary library;
     private BenchRig rig;
 
     // the player of the type being measured
@@ -37,17 +38,17 @@ public final class MotionBench {
     private double standingZ;
     private long cycles;
 
-    private MotionBench(BenchOptions opt, MotionLibrary library) {
+    private MotionBench(BenchOptions opt, java.util.Map<Integer, MotionLibrary> libraries) {
         this.opt = opt;
-        this.library = library;
+        this.libraries = libraries;
     }
 
     public static void main(String[] args) {
         BenchOptions opt;
-        MotionLibrary lib;
+        java.util.Map<Integer, MotionLibrary> lib = new java.util.HashMap<>();
         try {
             opt = BenchOptions.parse(args);
-            lib = MotionLibrary.load(opt.motions());
+            for (int type : opt.types()) lib.put(type, MotionLibrary.load(opt.motions(), type));
         } catch (IllegalArgumentException | MotionFileException e) {
             System.err.println("motion-bench: " + e.getMessage());
             System.exit(2);
@@ -144,6 +145,7 @@ public final class MotionBench {
 
     private void connect(int type) throws IOException {
         connectedType = type;
+        library = libraries.get(type);
         rig.connect(opt.host(), opt.port(), type);
         last = rig.last();
         controller = new MotionController(library, MotionConfig.DEFAULT);
