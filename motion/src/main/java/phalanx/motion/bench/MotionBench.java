@@ -132,7 +132,7 @@ public final class MotionBench {
             if (opt.runs("kick")) kicks(row);
             if (opt.runs("dive")) dives(row);
             if (opt.runs("getup")) {
-                for (int k = 0; k < 4; k++) if (opt.lying().contains(List.of("front", "back", "side", "oblique").get(k))) getUp(row, lying(t, k));
+                for (int k = 0; k < 4; k++) if (opt.lying().contains(List.of("front", "back", "side", "oblique").get(k))) getUp(row, lying(t, k), 0);
             }
             System.err.printf(Locale.ROOT, "type %d trial %d done (%d cycles)%n", type, t + 1, cycles);
         }
@@ -153,7 +153,27 @@ public final class MotionBench {
         trainer("(playMode PlayOn)");
     }
 
-    private void receive() throws IOException { last = rig.receive(); }
+    /**
+     * Set when a message shows the referee out of PlayOn. The bench's server keeps its 300 s halves: at
+     * half time the referee puts the ball on the centre spot and keeps it there, and moves robots out of
+     * the opponents' half, and after the second half the game is over (session 6: a type 2 run after
+     * type 0 "kicked" 0.00 m ten times). Each trial starts at game time 0 in PlayOn ({@link #place});
+     * a kick or get-up during which play still stopped is void and measured again.
+     */
+    private boolean playStopped;
+
+    private void receive() throws IOException {
+        last = rig.receive();
+        if (last.gameState() != null && last.gameState().playMode() != phalanx.comm.perception.PlayMode.PLAY_ON
+                && last.gameState().playMode() != phalanx.comm.perception.PlayMode.UNKNOWN) playStopped = true; // UNKNOWN: no pm in the message
+    }
+
+    /** True (with a line saying so) when the referee stopped play during the trial just measured. */
+    private boolean voided(String what) {
+        if (!playStopped) return false;
+        System.err.printf(Locale.ROOT, "  %s: void, the referee stopped play during the trial (half time?); measured again%n", what);
+        return true;
+    }
 
     /** One cycle: read, step the controller, reply. A small head motion keeps trainer-moved robots from hanging. */
     private void cycle(MotionRequest request) throws IOException {
@@ -228,7 +248,11 @@ public final class MotionBench {
             rig.send(out.syn().text());
         }
         trainer(String.format(Locale.ROOT, "(agent (unum 1) (team Left) (move %.3f %.3f %.3f -90))", x, y, standingZ - 0.02));
+        // game time back to 0 and play on: no trial runs into the half's end (300 s on a standard server)
+        trainer("(time 0)");
+        trainer("(playMode PlayOn)");
         hold(50);
+        playStopped = false;
     }
 
     /** The first phase of walk_forward: the crouch every motion starts from. */
@@ -311,6 +335,7 @@ public final class MotionBench {
     private void kicks(Row row) throws IOException {
         for (String motion : opt.kicks()) {
             double[] k = kick(motion);
+            for (int again = 0; again < 3 && voided(motion); again++) k = kick(motion);
             KickStats st = row.kicks.computeIfAbsent(motion, m -> new KickStats());
             st.distance.add(k[0]);
             st.dirError.add(k[1]);
@@ -420,7 +445,7 @@ public final class MotionBench {
      * (not fallen by the walk's test) 1 s after the motion ended; time: from the request until the
      * torso is upright at 3/4 of standing height. With --getup-walk the walk then starts at full speed.
      */
-    private void getUp(Row row, Lying lying) throws IOException {
+    private void getUp(Row row, Lying lying, int again) throws IOException {
         place(4, 4);
         if (fallen()) {
             // seen twice in long runs: the robot kept lying on its back after every trainer move (its
@@ -485,6 +510,12 @@ public final class MotionBench {
             // the monitor's picture can lag up to 1 s behind (session 6: a robot standing at the end of the
             // get-up was still shown half up): an "up" first seen now counts, timed when seen
             if (stood && Double.isNaN(upAt) && standsUp()) upAt = simTime() - t0;
+        }
+        if (again < 3 && voided("getup " + lying)) {
+            g.tries--;
+            getUpQuietly();
+            getUp(row, lying, again + 1);
+            return;
         }
         boolean ok = stood && !Double.isNaN(upAt);
         boolean walkFell = false;
