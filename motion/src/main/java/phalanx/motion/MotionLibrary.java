@@ -19,7 +19,8 @@ import java.util.stream.Stream;
 /**
  * The motions a player can request, by name: every {@code *.xml} (phase motion, 4.5.1) and
  * {@code *.motion} (Webots text motion, 4.5.3) in a folder, named after the file. Loaded once at
- * start; any bad file stops the start with a message naming file, line and field.
+ * start; any bad file stops the start with a message naming file, line and field. A player loads
+ * the folder for its robot type ({@link #load(Path, int)}: files in {@code typeN/} replace theirs).
  */
 public final class MotionLibrary {
     private final Map<String, Motion> motions;
