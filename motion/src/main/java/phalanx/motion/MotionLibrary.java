@@ -36,10 +36,7 @@ public final class MotionLibrary {
     }
 
     public static MotionLibrary load(Path dir) throws MotionFileException {
-        if (!Files.isDirectory(dir)) throw new MotionFileException(dir, 0, null, null, "not a folder of motion files");
-        Map<String, Motion> m = read(dir);
-        checkSwitches(m);
-        return new MotionLibrary(m);
+        return load(dir, null);
     }
 
     /**
@@ -48,10 +45,13 @@ public final class MotionLibrary {
      * replaces nothing is an error, since a misspelt name would otherwise never be played.
      */
     public static MotionLibrary load(Path dir, int robotType) throws MotionFileException {
+        return load(dir, dir.resolve("type" + robotType));
+    }
+
+    private static MotionLibrary load(Path dir, Path own) throws MotionFileException {
         if (!Files.isDirectory(dir)) throw new MotionFileException(dir, 0, null, null, "not a folder of motion files");
         Map<String, Motion> m = read(dir);
-        Path own = dir.resolve("type" + robotType);
-        if (Files.isDirectory(own)) {
+        if (own != null && Files.isDirectory(own)) {
             for (Motion x : read(own).values()) {
                 if (m.replace(x.name(), x) == null) {
                     throw new MotionFileException(x.source(), 0, null, null,

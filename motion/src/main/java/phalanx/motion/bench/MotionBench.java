@@ -3,6 +3,7 @@ package phalanx.motion.bench;
 import phalanx.comm.effector.EffectorMessage;
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.Perception;
+import phalanx.comm.perception.PlayMode;
 import phalanx.motion.MotionConfig;
 import phalanx.motion.MotionFileException;
 import phalanx.motion.MotionLibrary;
@@ -16,8 +17,10 @@ import phalanx.motion.walk.WalkVelocity;
 
 import java.io.IOException;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * scripts/motion-bench: one player in a running rcssserver3d, trials set up with the monitor port's
@@ -27,7 +30,7 @@ import java.util.Locale;
  */
 public final class MotionBench {
     private final BenchOptions opt;
-    private final java.util.Map<Integer, MotionLibrary> libraries; // per robot type (motions/typeN/ files replace the folder's)
+    private final Map<Integer, MotionLibrary> libraries; // per robot type (motions/typeN/ files replace the folder's)
     private MotionLibrary library;
     private BenchRig rig;
 
@@ -38,14 +41,14 @@ public final class MotionBench {
     private double standingZ;
     private long cycles;
 
-    private MotionBench(BenchOptions opt, java.util.Map<Integer, MotionLibrary> libraries) {
+    private MotionBench(BenchOptions opt, Map<Integer, MotionLibrary> libraries) {
         this.opt = opt;
         this.libraries = libraries;
     }
 
     public static void main(String[] args) {
         BenchOptions opt;
-        java.util.Map<Integer, MotionLibrary> lib = new java.util.HashMap<>();
+        Map<Integer, MotionLibrary> lib = new HashMap<>();
         try {
             opt = BenchOptions.parse(args);
             for (int type : opt.types()) lib.put(type, MotionLibrary.load(opt.motions(), type));
@@ -164,8 +167,8 @@ public final class MotionBench {
 
     private void receive() throws IOException {
         last = rig.receive();
-        if (last.gameState() != null && last.gameState().playMode() != phalanx.comm.perception.PlayMode.PLAY_ON
-                && last.gameState().playMode() != phalanx.comm.perception.PlayMode.UNKNOWN) playStopped = true; // UNKNOWN: no pm in the message
+        PlayMode pm = last.gameState() == null ? PlayMode.UNKNOWN : last.gameState().playMode();
+        if (pm != PlayMode.PLAY_ON && pm != PlayMode.UNKNOWN) playStopped = true; // UNKNOWN: no pm in the message
     }
 
     /** True (with a line saying so) when the referee stopped play during the trial just measured. */
