@@ -88,7 +88,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * motions/strong_kick.xml`): a ball 1-2 cm nearer is struck earlier in the swing (its precursor went 6.6 m from 0.17 m
      * ahead against 8.9 m from 0.187 m; motion/README.md "Kicks and dives").
      */
-    private static final double STRONG_X = 0.192, STRONG_Y = -0.047;
+    private static final double STRONG_X = 0.195, STRONG_Y = -0.039;
 
     public record Kick(double spotX, double spotY, double strongSpotX, double strongSpotY, double toleranceX, double toleranceY, double restartDistance,
                        double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
