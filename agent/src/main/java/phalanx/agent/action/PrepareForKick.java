@@ -14,7 +14,9 @@ import phalanx.localization.field.Vector2;
  * steps across to the right foot; the left foot's spot is the right one's mirror. Sideways first (a forward step with the ball
  * off to the side would push it away), then forward. Ours, beyond the thesis: a ball nearer than
  * the spot's band (at the feet) is not kicked off the shin; the robot steps back first (a side step
- * there would push the ball with the foot).
+ * there would push the ball with the foot). The forward steps go on until the ball is within
+ * {@code toleranceFarX} beyond the spot, not just inside the band: the robot stops where it first
+ * accepts the ball, so the far edge would be where every kick is played.
  */
 public final class PrepareForKick implements Action {
     private final AgentConfig config;
@@ -62,6 +64,7 @@ public final class PrepareForKick implements Action {
 
     private boolean ready(Vector2 ball) {
         AgentConfig.Kick k = config.kick();
-        return Math.abs(ball.x() - k.spotX(strong)) <= k.toleranceX() && Math.abs(ball.y() - k.spotY(strong, left)) <= k.toleranceY();
+        double ex = ball.x() - k.spotX(strong);
+        return ex >= -k.toleranceX() && ex <= k.toleranceFarX() && Math.abs(ball.y() - k.spotY(strong, left)) <= k.toleranceY();
     }
 }

@@ -164,6 +164,22 @@ class BasicActionsTest {
     }
 
     @Test
+    void prepareForKickStepsOnUntilTheBallIsNearTheSpotNotJustInsideTheBand() {
+        // In a game the robot stopped where it first accepted the ball: 2.5 cm beyond the strong spot, where the
+        // strong kick goes 8 m instead of 10 (motion/README.md, session 7).
+        AgentConfig.Kick k = C.kick();
+        PrepareForKick p = new PrepareForKick(C);
+        var far = World.at(0, 0, 0).ballRel(k.spotX(true) + 0.025, k.spotY(true, false)).situation();
+        p.choose(far, true);
+        assertFalse(p.done(far), "2.5 cm beyond the spot: not yet");
+        assertEquals(new Move.Walk(0, true), p.decide(far).move());
+        var close = World.at(0, 0, 0).ballRel(k.spotX(true) + 0.008, k.spotY(true, false)).situation();
+        assertTrue(p.done(close), "within toleranceFarX (1 cm) of the spot");
+        var near = World.at(0, 0, 0).ballRel(k.spotX(true) - 0.025, k.spotY(true, false)).situation();
+        assertTrue(p.done(near), "on the near side the band stays 3 cm: no step back for a ball 2.5 cm short");
+    }
+
+    @Test
     void prepareForKickStepsBackFromABallAtTheFeet() {
         PrepareForKick p = new PrepareForKick(C);
         var atFeet = World.at(0, 0, 0).ballRel(0.10, -0.055).situation();   // 7 cm short of the 0.17 m spot
