@@ -76,9 +76,6 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          stopping at the far edge, toleranceX, left the strong kick's ball 2.5 cm far in a game,
      *                          and from there the strong kick goes 8 m instead of 10; motion/README.md session 7)
      * @param toleranceY        ... and this much to either side (ours)
-     * @param settleSeconds     On Ball kicks only after the ball has stayed in the band this long with the robot told to
-     *                          stand (ours: a robot that accepted the ball while still walking travelled on while the
-     *                          walk stopped, and kicked a ball at its feet; docs/matches.md session 7)
      * @param restartDistance   On Ball starts again when the ball gets this far while preparing (ours: taken away)
      * @param alignDegPerMetre  On Ball's alignment tolerance grows with the distance to the goal (4.6.2
      *                          "inversely proportional" precision; the rate is ours) ...
@@ -96,16 +93,16 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      */
     private static final double STRONG_X = 0.195, STRONG_Y = -0.039;
 
-    public record Kick(double spotX, double spotY, double strongSpotX, double strongSpotY, double toleranceX, double toleranceFarX, double toleranceY, double settleSeconds, double restartDistance,
+    public record Kick(double spotX, double spotY, double strongSpotX, double strongSpotY, double toleranceX, double toleranceFarX, double toleranceY, double restartDistance,
                        double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
                        double oneShotTimeout, double dribbleWithin) {
-        public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.01, 0.025, 0.4, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
+        public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
 
         /**
          * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
          * of 10 kicks on that type), tuned for this spot (motions/README.md, `scripts/kick-search params`).
          */
-        public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.185, -0.035, 0.03, 0.01, 0.025, 0.4, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
+        public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.185, -0.035, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
 
         /** The spot's distance ahead for the strong kick or the normal one. */
         public double spotX(boolean strong) { return strong ? strongSpotX : spotX; }
@@ -117,7 +114,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         }
 
         public Kick withDribbleWithin(double metres) {
-            return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, settleSeconds, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
+            return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
                     strongBeyond, oneShotTimeout, metres);
         }
     }

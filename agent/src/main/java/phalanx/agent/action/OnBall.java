@@ -15,9 +15,7 @@ import phalanx.localization.field.Vector2;
  * lost or taken away it starts again from Walk To Ball. Ours: in PlayOn, with the ball nearer the
  * opponent goal than {@code AgentConfig.Kick.dribbleWithin}, the aligned player dribbles toward the
  * goal (Dribble Ball To Direction) instead of preparing a kick; set pieces are always kicked, since
- * a dribble touches the ball twice (docs/protocol.md, "Set pieces"). Ours: the kick starts only once the
- * ball has stayed in Prepare For Kick's band for {@code AgentConfig.Kick.settleSeconds} with the robot told
- * to stand, since the walk travels on while it stops.
+ * a dribble touches the ball twice (docs/protocol.md, "Set pieces").
  */
 public final class OnBall implements Action {
     public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK, DRIBBLE }
@@ -32,9 +30,6 @@ public final class OnBall implements Action {
     private State state = State.WALK_TO_BALL;
     private int kicks;
     private boolean justKicked;
-    private double readySince = Double.NaN;
-    /** Server times are floats that differ by multiples of 20 ms: compare with half a cycle to spare. */
-    private static final double HALF_CYCLE = 0.01;
 
     public OnBall(AgentConfig config) {
         this.config = config;
@@ -72,7 +67,6 @@ public final class OnBall implements Action {
                     if (Double.isNaN(e)) { state = State.FIND_GOAL; return find.decide(s); }
                     if (Math.abs(e) > tolerance(s)) return orbit.step(s, ball, e);
                     state = dribbles(s) ? State.DRIBBLE : State.PREPARE;
-                    readySince = Double.NaN;
                     if (state == State.PREPARE) prepare.choose(s, strong(s));
                 }
                 case DRIBBLE -> {
@@ -84,11 +78,7 @@ public final class OnBall implements Action {
                 case PREPARE -> {
                     double e = goalError(s);
                     if (!Double.isNaN(e) && Math.abs(e) > 2 * tolerance(s)) { state = State.ALIGN; return orbit.step(s, ball, e); }
-                    if (!prepare.done(s)) { readySince = Double.NaN; return prepare.decide(s); }
-                    // in the band: stand until the walk has stopped and the ball is still in the band
-                    if (Double.isNaN(readySince)) readySince = s.now();
-                    if (s.now() - readySince < config.kick().settleSeconds() - HALF_CYCLE) return prepare.decide(s);
-                    readySince = Double.NaN;
+                    if (!prepare.done(s)) return prepare.decide(s);
                     state = State.KICK;
                     kick.start(s, prepare.strong(), prepare.leftFoot());
                 }

@@ -36,9 +36,9 @@ class OnBallTest {
 
         // 5. Ball at the right foot, 15 m from the goal: the strong kick, requested until it plays.
         World kick = World.at(0, 0, 0).ballRel(0.17, -0.055).time(15);
-        assertEquals(new Move.Kick(true, false), settled(a, kick));
+        assertEquals(new Move.Kick(true, false), a.decide(kick.situation()).move());
         assertEquals(OnBall.State.KICK, a.state());
-        kick.motion("strong_kick", null, 0).time(15 + SETTLE + 0.04);
+        kick.motion("strong_kick", null, 0).time(15.04);
         assertEquals(Move.STAND, a.decide(kick.situation()).move(), "playing: not requested again");
         assertFalse(a.done(kick.situation()));
 
@@ -113,9 +113,9 @@ class OnBallTest {
         assertTrue(m instanceof Move.Turn t && !t.left(), m.toString());
         assertEquals(OnBall.State.ALIGN, a.state());
         OnBall far = new OnBall(C);
-        assertEquals(new Move.Kick(true, false), settled(far, World.at(-10.2, 0, 20).ballRel(0.17, -0.055)));
+        assertEquals(new Move.Kick(true, false), far.decide(World.at(-10.2, 0, 20).ballRel(0.17, -0.055).situation()).move());
         OnBall near = new OnBall(C);
-        assertEquals(new Move.Kick(false, false), settled(near, World.at(11, 0, 0).ballRel(0.17, -0.055)));
+        assertEquals(new Move.Kick(false, false), near.decide(World.at(11, 0, 0).ballRel(0.17, -0.055).situation()).move());
     }
 
     @Test
@@ -125,38 +125,15 @@ class OnBallTest {
         assertEquals(new Move.Walk(0, true), a.decide(World.at(10.8, 0, 0).ballRel(0.25, 0.05).situation()).move());
         assertEquals(OnBall.State.PREPARE, a.state());
         // At the left foot's spot: the normal kick (near the goal) with the left foot.
-        assertEquals(new Move.Kick(false, true), settled(a, World.at(10.9, 0, 0).ballRel(0.17, 0.055).time(1)));
+        assertEquals(new Move.Kick(false, true), a.decide(World.at(10.9, 0, 0).ballRel(0.17, 0.055).time(1).situation()).move());
     }
 
     @Test
     void typeFourStrongKicksAtItsOwnFilesSpot() {
         // 20 m from the goal both take the strong kick, each at its spot: type 4 plays motions/type4/strong_kick.xml,
         // tuned 0.185 m ahead and 0.035 m right; with the ball 3.5 cm farther right it first steps aside.
-        assertEquals(new Move.Kick(true, false), settled(new OnBall(AgentConfig.forRobotType(0)), World.at(-10.2, 0, 20).ballRel(0.195, -0.039)));
-        assertEquals(new Move.Kick(true, false), settled(new OnBall(AgentConfig.forRobotType(4)), World.at(-10.2, 0, 20).ballRel(0.185, -0.035)));
+        assertEquals(new Move.Kick(true, false), new OnBall(AgentConfig.forRobotType(0)).decide(World.at(-10.2, 0, 20).ballRel(0.195, -0.039).situation()).move());
+        assertEquals(new Move.Kick(true, false), new OnBall(AgentConfig.forRobotType(4)).decide(World.at(-10.2, 0, 20).ballRel(0.185, -0.035).situation()).move());
         assertNotEquals(new Move.Kick(true, false), new OnBall(AgentConfig.forRobotType(4)).decide(World.at(-10.2, 0, 20).ballRel(0.187, -0.07).situation()).move());
-    }
-
-    private static final double SETTLE = AgentConfig.DEFAULT.kick().settleSeconds();
-
-    /** On Ball's move once the ball has stayed in the band for settleSeconds; its first cycle there stands. */
-    private static Move settled(OnBall a, World w) {
-        double t0 = w.situation().now();
-        assertEquals(Move.STAND, a.decide(w.situation()).move(), "in the band: stand until the walk has stopped");
-        return a.decide(w.time(t0 + SETTLE).situation()).move();
-    }
-
-    @Test
-    void aBallThatEndsAtTheFeetWhileTheWalkStopsIsNotKicked() {
-        // In a game the robot accepted the ball 0.20 m ahead while still walking and kicked it at its feet.
-        OnBall a = new OnBall(C);
-        assertEquals(Move.STAND, a.decide(World.at(-10.2, 0, 20).ballRel(0.195, -0.039).time(1).situation()).move());
-        // 0.2 s later the stopping walk has carried the robot 7 cm on: step back, no kick.
-        assertEquals(new Move.StepBack(), a.decide(World.at(-10.2, 0, 20).ballRel(0.125, -0.039).time(1.2).situation()).move());
-        assertEquals(OnBall.State.PREPARE, a.state());
-        // Back in the band: the wait starts again from there.
-        assertEquals(Move.STAND, a.decide(World.at(-10.2, 0, 20).ballRel(0.19, -0.039).time(1.5).situation()).move());
-        assertEquals(Move.STAND, a.decide(World.at(-10.2, 0, 20).ballRel(0.19, -0.039).time(1.5 + SETTLE - 0.05).situation()).move());
-        assertEquals(new Move.Kick(true, false), a.decide(World.at(-10.2, 0, 20).ballRel(0.19, -0.039).time(1.5 + SETTLE).situation()).move());
     }
 }
