@@ -74,7 +74,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          spotX (ours; a nearer ball was kicked off the shin)
      * @param toleranceFarX     ... but steps forward until the ball is at most this much farther than spotX (ours:
      *                          stopping at the far edge, toleranceX, left the strong kick's ball 2.5 cm far in a game,
-     *                          and from there the strong kick goes 8 m instead of 10; motion/README.md session 7)
+     *                          and from there the strong kick goes 8 m instead of 10; docs/matches.md session 7)
      * @param toleranceY        ... and this much to either side (ours)
      * @param restartDistance   On Ball starts again when the ball gets this far while preparing (ours: taken away)
      * @param alignDegPerMetre  On Ball's alignment tolerance grows with the distance to the goal (4.6.2
@@ -102,7 +102,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
          * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
          * of 10 kicks on that type), tuned for this spot (motions/README.md, `scripts/kick-search params`).
          */
-        public static final Kick TYPE_4 = new Kick(0.17, -0.055, 0.185, -0.035, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
+        public static final Kick TYPE_4 = DEFAULT.withStrongSpot(0.185, -0.035);
 
         /** The spot's distance ahead for the strong kick or the normal one. */
         public double spotX(boolean strong) { return strong ? strongSpotX : spotX; }
@@ -111,6 +111,12 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         public double spotY(boolean strong, boolean leftFoot) {
             double y = strong ? strongSpotY : spotY;
             return leftFoot ? -y : y;
+        }
+
+        /** The same with another strong-kick spot (a robot type with its own strong_kick.xml). */
+        public Kick withStrongSpot(double x, double y) {
+            return new Kick(spotX, spotY, x, y, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
+                    strongBeyond, oneShotTimeout, dribbleWithin);
         }
 
         public Kick withDribbleWithin(double metres) {
