@@ -2,41 +2,26 @@ package phalanx.motion;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import phalanx.motion.PythonScript.Run;
 import phalanx.motion.phase.PhaseMotion;
 
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.*;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * scripts/mirror-motion (motions/README.md "Mirrors"): its mirror of dive_left.xml is dive_right.xml,
  * and bad input gets a clear message and status 1. Needs python3; skips with a message without it.
  */
 class MirrorMotionScriptTest {
-    private record Run(int status, String out, String err) {}
-
     private static Run run(String... args) throws Exception {
-        ProcessBuilder pb = new ProcessBuilder(args);
-        Process p;
-        try {
-            p = pb.start();
-        } catch (java.io.IOException e) {
-            assumeTrue(false, "python3 is not installed: scripts/mirror-motion not tested");
-            return null;
-        }
-        p.getOutputStream().close();
-        byte[] out = p.getInputStream().readAllBytes(), err = p.getErrorStream().readAllBytes();
-        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
-        return new Run(p.exitValue(), new String(out, StandardCharsets.UTF_8), new String(err, StandardCharsets.UTF_8));
+        return PythonScript.run(java.util.Map.of(), args);
     }
 
     @Test
     void mirrorsTheLeftDiveIntoTheRightOne(@TempDir Path tmp) throws Exception {
-        Run r = run("python3", "scripts/mirror-motion", "motions/dive_left.xml");
+        Run r = run("scripts/mirror-motion", "motions/dive_left.xml");
         assertEquals(0, r.status(), r.err());
         Files.writeString(tmp.resolve("dive_right.xml"), r.out());
         PhaseMotion mine = (PhaseMotion) MotionLibrary.load(tmp).get("dive_right");
@@ -51,16 +36,16 @@ class MirrorMotionScriptTest {
 
     @Test
     void refusesAMissingFileAndAFileThatIsNoPhaseMotion(@TempDir Path tmp) throws Exception {
-        Run r = run("python3", "scripts/mirror-motion", tmp.resolve("nope.xml").toString());
+        Run r = run("scripts/mirror-motion", tmp.resolve("nope.xml").toString());
         assertEquals(1, r.status());
         assertTrue(r.err().contains("cannot read") && r.err().contains("nope.xml"), r.err());
         Path text = tmp.resolve("turn.motion");
         Files.writeString(text, "#WEBOTS_MOTION,V1.0\nHeadYaw\n00:00:000,P1,0\n");
-        r = run("python3", "scripts/mirror-motion", text.toString());
+        r = run("scripts/mirror-motion", text.toString());
         assertEquals(1, r.status());
         assertTrue(r.err().contains("is not an XML phase motion"), r.err());
         assertEquals("", r.out(), "nothing half-written on stdout");
-        r = run("python3", "scripts/mirror-motion");
+        r = run("scripts/mirror-motion");
         assertEquals(1, r.status());
         assertTrue(r.err().contains("mirror-motion motions/kick.xml"), "usage: " + r.err());
     }
