@@ -1,6 +1,6 @@
 package phalanx.agent;
 
-import phalanx.motion.kinematics.LegGeometry;
+import phalanx.model.robot.NaoModel;
 
 /**
  * Every constant of the agent's actions (thesis 4.6) and goalkeeper (5.13), in one place. Defaults
@@ -29,8 +29,8 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                         every 3 cycles plus one cycle of latency)
      */
     public record Head(double panAmplitudeDeg, double panPeriodSeconds, double scanPitchDownDeg,
-                       LegGeometry legs, double leadSeconds) {
-        public static final Head DEFAULT = new Head(90, 2.0, -35, LegGeometry.TYPE_0, 0.08);
+                       NaoModel legs, double leadSeconds) {
+        public static final Head DEFAULT = new Head(90, 2.0, -35, NaoModel.TYPE_0, 0.08);
     }
 
     /**
@@ -145,7 +145,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          (`scripts/motion-bench --only dive`, motion/README.md "Dives")
      * @param postMargin        Threshold_Left/Right = goal half width + this (5.13; the margin is ours)
      * @param bodyBlock         a ball crossing closer than this to the keeper's centre is left to the body (ours:
-     *                          the feet reach 0.095 m out, the hip's 0.055 m (NaoDimensions) and half
+     *                          the feet reach 0.095 m out, the hip's 0.055 m (NaoModel) and half
      *                          the 0.08 m foot, plus the ball's 0.042 m radius; 0.08 m
      *                          before, and the keeper dived away from balls rolling at its feet in the 6.3 test)
      * @param ballDecay         rolling ball velocity decay rate, 1/s: v(t) = v0·e^(−k·t) (ours: 1.053
@@ -209,7 +209,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     /** The defaults with the leg geometry of this robot type (the camera height for Track Object) and its kicks. */
     public static AgentConfig forRobotType(int type) {
         Head h = new Head(Head.DEFAULT.panAmplitudeDeg(), Head.DEFAULT.panPeriodSeconds(), Head.DEFAULT.scanPitchDownDeg(),
-                LegGeometry.forType(type), Head.DEFAULT.leadSeconds());
+                NaoModel.ofType(type), Head.DEFAULT.leadSeconds());
         return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT);
     }
 }

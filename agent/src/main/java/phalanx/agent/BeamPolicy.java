@@ -5,9 +5,9 @@ import phalanx.coordination.CoordinationConfig;
 import phalanx.coordination.formation.Formation;
 import phalanx.coordination.formation.FormationGenerator;
 import phalanx.coordination.formation.Role;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 

@@ -9,5 +9,5 @@ public interface Brain {
     Decision decide(Situation s, TeamChannel channel);
 
     /** Where the brain is heading, for debug drawing (own frame); null when it has no target. */
-    default phalanx.localization.field.Vector2 target() { return null; }
+    default phalanx.model.field.Vector2 target() { return null; }
 }

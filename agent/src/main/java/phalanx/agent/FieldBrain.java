@@ -9,8 +9,8 @@ import phalanx.comm.team.ActionId;
 import phalanx.coordination.CoordinationConfig;
 import phalanx.coordination.formation.FormationGenerator;
 import phalanx.coordination.formation.Role;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * A field player: carries out the coordinator's last order (thesis 5.3); when the coordinator is

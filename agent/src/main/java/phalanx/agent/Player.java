@@ -17,8 +17,8 @@ import phalanx.coordination.CoordinationConfig;
 import phalanx.coordination.Coordinator;
 import phalanx.localization.LocalizationConfig;
 import phalanx.localization.belief.BeliefStore;
-import phalanx.localization.body.NaoBody;
-import phalanx.localization.field.FieldSpec;
+import phalanx.model.robot.NaoModel;
+import phalanx.model.field.FieldSpec;
 import phalanx.motion.MotionConfig;
 import phalanx.motion.MotionFileException;
 import phalanx.motion.MotionLibrary;
@@ -95,7 +95,7 @@ public final class Player {
             throw new IOException("no motion folder at " + o.motions().toAbsolutePath() + " (use --motions DIR)");
         }
         MotionLibrary library = MotionLibrary.load(o.motions(), o.robotType());
-        BeliefStore beliefs = new BeliefStore(field, LocalizationConfig.DEFAULT, NaoBody.ofType(o.robotType()), o.team(), null, o.unum());
+        BeliefStore beliefs = new BeliefStore(field, LocalizationConfig.DEFAULT, NaoModel.ofType(o.robotType()), o.team(), null, o.unum());
         RoboViz draw = o.roboviz() == null ? RoboViz.OFF : RoboViz.to(o.roboviz());
         ChannelConfig channel = ChannelConfig.DEFAULT.withPlayers(o.players());
         TeamKey key = teamKey(o.team());

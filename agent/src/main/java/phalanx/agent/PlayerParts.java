@@ -4,7 +4,7 @@ import phalanx.agent.decide.Situation;
 import phalanx.agent.roboviz.RoboViz;
 import phalanx.agent.team.TeamChannel;
 import phalanx.localization.belief.BeliefStore;
-import phalanx.localization.field.FieldSpec;
+import phalanx.model.field.FieldSpec;
 import phalanx.agent.act.Body;
 import phalanx.motion.control.MotionController;
 

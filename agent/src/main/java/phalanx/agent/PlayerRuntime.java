@@ -13,7 +13,7 @@ import phalanx.comm.sexp.MalformedMessageException;
 import phalanx.comm.sexp.PerceptionParser;
 import phalanx.coordination.CoordinationConfig;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.field.Pose2;
+import phalanx.model.field.Pose2;
 import phalanx.motion.control.JointVelocities;
 
 import java.util.logging.Logger;

@@ -18,9 +18,9 @@ import phalanx.coordination.beliefs.TeamBeliefs;
 import phalanx.coordination.support.DynamicProgrammingSupportMapper;
 import phalanx.coordination.support.ScramSupportMapper;
 import phalanx.coordination.support.SupportCost;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * One whole coordination round (all six phases, 11 players, every one reporting type C, nobody inactive,

@@ -13,9 +13,9 @@ import phalanx.coordination.support.ScramSupportMapper;
 import phalanx.coordination.support.SupportCost;
 import phalanx.coordination.support.SupportMapper;
 import phalanx.coordination.support.SupportMapping;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * Compares the support mappers on the same random instances and prints Markdown tables for the README:

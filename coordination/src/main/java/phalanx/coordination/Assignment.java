@@ -2,7 +2,7 @@ package phalanx.coordination;
 
 import phalanx.coordination.formation.Role;
 import phalanx.coordination.subsets.Subset;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * One player's part of the team plan, in the team's own frame.

@@ -19,8 +19,8 @@ import phalanx.coordination.subsets.Subsets;
 import phalanx.coordination.support.SupportCost;
 import phalanx.coordination.support.SupportMapper;
 import phalanx.coordination.support.SupportMapping;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * One coordination round, phase by phase (Algorithm 3). Each method is one phase and must be called in

@@ -1,6 +1,6 @@
 package phalanx.coordination;
 
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * What one round carries into the next: the on-ball player, favoured by the hysteresis of 5.8, and the

@@ -5,7 +5,7 @@ import phalanx.coordination.beliefs.GlobalBeliefs;
 import phalanx.coordination.formation.Formation;
 import phalanx.coordination.formation.Role;
 import phalanx.coordination.subsets.Subsets;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * The result of one coordination round: an assignment per reporting player plus what led to it (for the

@@ -12,9 +12,9 @@ import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
 import phalanx.coordination.formation.Role;
 import phalanx.coordination.subsets.Subset;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 class CoordinatorTest {
     private final Coordinator coordinator = new Coordinator();

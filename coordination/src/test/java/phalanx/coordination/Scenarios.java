@@ -4,9 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /** Team situations for tests: every player reports type C with the same ball unless told otherwise. */
 final class Scenarios {

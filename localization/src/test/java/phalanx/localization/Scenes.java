@@ -11,9 +11,9 @@ import phalanx.comm.perception.SeenPlayer;
 import phalanx.comm.perception.Side;
 import phalanx.comm.perception.Vector3;
 import phalanx.comm.perception.Vision;
-import phalanx.localization.body.NaoBody;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
+import phalanx.model.robot.NaoModel;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -23,7 +23,7 @@ public final class Scenes {
     private Scenes() {}
 
     /** Camera height of an upright type-0 robot with straight legs: 0.385 + 0.155 m. */
-    public static final double CAMERA_HEIGHT = NaoBody.ofType(0).standingTorsoHeight() + 0.155;
+    public static final double CAMERA_HEIGHT = NaoModel.ofType(0).standingTorsoHeight() + 0.155;
 
     /** What the camera of a robot at this pose (own frame) sees of a point (own frame, z up), head straight. */
     public static Polar polar(Pose2 pose, double x, double y, double z) {

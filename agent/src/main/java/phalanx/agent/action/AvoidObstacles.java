@@ -4,10 +4,10 @@ import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.Situation;
 import phalanx.localization.belief.PlayerBelief;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Angles;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -5,9 +5,9 @@ import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Angles;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * 4.6.2 Dribble Ball To Direction: Walk To Direction with the ball kept in front of the feet. Away

@@ -4,8 +4,8 @@ import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.Situation;
 import phalanx.localization.belief.WorldBelief;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * The belief questions every action asks, answered safely: a missing belief, a NaN or a ball never

@@ -11,8 +11,8 @@ import phalanx.comm.team.ActionId;
 import phalanx.localization.belief.PlayerBelief;
 import phalanx.localization.belief.WorldBelief;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.Locale;
 import java.util.logging.Logger;

@@ -5,8 +5,8 @@ import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * 4.6.1 Find Opponent's Goal: Scan until the goal's direction is known. The goal posts are
@@ -41,6 +41,6 @@ public final class FindOpponentGoal implements Action {
         Pose2 self = Facts.self(s, c);
         if (self == null || from == null || s.field() == null) return Double.NaN;
         Vector2 d = s.field().opponentGoal().minus(from);
-        return phalanx.localization.field.Angles.difference(d.angleDeg(), self.thetaDeg());
+        return phalanx.model.field.Angles.difference(d.angleDeg(), self.thetaDeg());
     }
 }

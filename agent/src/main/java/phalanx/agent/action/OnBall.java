@@ -5,8 +5,8 @@ import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Situation;
 import phalanx.comm.perception.PlayMode;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * 4.6.2 On Ball, the state machine of Figure 4.14: Walk To Ball, Find Opponent's Goal, align with

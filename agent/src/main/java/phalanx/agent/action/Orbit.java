@@ -4,7 +4,7 @@ import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * Turns the body's heading around a ball lying in front of it, with side steps and turns only

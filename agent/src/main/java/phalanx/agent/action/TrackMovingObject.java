@@ -3,8 +3,8 @@ package phalanx.agent.action;
 import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.HeadTarget;
 import phalanx.agent.decide.Situation;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * 4.6.1 Track Moving Object on the ball: Track Object plus the ball's direction and speed. The two

@@ -4,8 +4,8 @@ import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.HeadTarget;
 import phalanx.agent.decide.Situation;
 import phalanx.comm.perception.JointAngles;
-import phalanx.localization.field.Vector2;
-import phalanx.motion.kinematics.CameraHeight;
+import phalanx.model.field.Vector2;
+import phalanx.model.robot.CameraHeight;
 
 /**
  * 4.6.1 Track Object: points the camera at an object on the ground so it stays in the centre of the

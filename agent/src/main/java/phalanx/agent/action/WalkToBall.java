@@ -5,7 +5,7 @@ import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * 4.6.2 Walk To Ball: turn to the ball, walk to it, slow down near it, stop close enough to kick.

@@ -4,9 +4,9 @@ import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Situation;
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Angles;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * 4.6.2 Walk To Direction: walk along a direction of the own frame until told otherwise. Below 7°

@@ -1,6 +1,6 @@
 package phalanx.agent.decide;
 
-import phalanx.localization.field.Pose2;
+import phalanx.model.field.Pose2;
 
 /**
  * One cycle's decision: the body's move, where the head looks, and a beam (own frame; null for

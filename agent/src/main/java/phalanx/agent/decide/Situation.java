@@ -3,7 +3,7 @@ package phalanx.agent.decide;
 import phalanx.comm.perception.JointAngles;
 import phalanx.comm.perception.PlayMode;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.field.FieldSpec;
+import phalanx.model.field.FieldSpec;
 
 /**
  * Everything an action may read in one cycle: the beliefs, the game, and the motion in progress.

@@ -1,6 +1,6 @@
 package phalanx.agent.goalkeeper;
 
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * Where and when a rolling ball crosses the goalkeeper's Y axis (thesis 5.13, Figure 5.15), with

@@ -11,9 +11,9 @@ import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
 import phalanx.localization.belief.PlayerBelief;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 

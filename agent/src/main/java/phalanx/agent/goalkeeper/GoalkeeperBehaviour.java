@@ -9,8 +9,8 @@ import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
 import phalanx.comm.perception.PlayMode;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.Locale;
 import java.util.logging.Logger;

@@ -3,8 +3,8 @@ package phalanx.agent.roboviz;
 import phalanx.comm.perception.Side;
 import phalanx.localization.belief.PlayerBelief;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * Draws one player's beliefs into RoboViz, one set per layer under

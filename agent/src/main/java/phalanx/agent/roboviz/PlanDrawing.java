@@ -4,7 +4,7 @@ import phalanx.comm.perception.Side;
 import phalanx.coordination.Assignment;
 import phalanx.coordination.TeamPlan;
 import phalanx.coordination.beliefs.PlayerBelief;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * Draws the goalkeeper's last coordination round (thesis chapter 5) under

@@ -3,8 +3,8 @@ package phalanx.agent.team;
 import phalanx.comm.team.TeamMessage;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * The coordination reports of thesis 5.3 both ways: what a player says about its beliefs (C, L, B

@@ -15,7 +15,7 @@ import phalanx.coordination.TeamPlan;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.field.FieldSpec;
+import phalanx.model.field.FieldSpec;
 
 import java.util.ArrayList;
 import java.util.List;

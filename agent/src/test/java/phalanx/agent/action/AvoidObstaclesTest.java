@@ -2,7 +2,7 @@ package phalanx.agent.action;
 
 import org.junit.jupiter.api.Test;
 import phalanx.agent.AgentConfig;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 

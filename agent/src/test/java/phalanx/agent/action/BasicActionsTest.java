@@ -77,9 +77,9 @@ class BasicActionsTest {
         assertFalse(f.done(stale.situation()));
         var s = World.at(0, 0, 90).situation();    // facing +y; the goal (15, 0) lies 90° to the right
         assertTrue(f.done(s));
-        assertEquals(-90, FindOpponentGoal.goalBearingFrom(s, C, new phalanx.localization.field.Vector2(0, 0)), 1e-9);
+        assertEquals(-90, FindOpponentGoal.goalBearingFrom(s, C, new phalanx.model.field.Vector2(0, 0)), 1e-9);
         assertEquals(-90 - Math.toDegrees(Math.atan2(5, 15)),
-                FindOpponentGoal.goalBearingFrom(s, C, new phalanx.localization.field.Vector2(0, 5)), 1e-9);
+                FindOpponentGoal.goalBearingFrom(s, C, new phalanx.model.field.Vector2(0, 5)), 1e-9);
     }
 
     @Test

@@ -7,7 +7,7 @@ import phalanx.comm.perception.PlayMode;
 import phalanx.comm.team.Action;
 import phalanx.comm.team.ActionId;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 import static org.junit.jupiter.api.Assertions.*;
 

@@ -55,7 +55,7 @@ class HeadActionsTest {
         HeadTarget t3 = TrackObject.ball(AgentConfig.forRobotType(3)).head(World.at(0, 0, 0).ballRel(1, 0).situation());
         assertEquals(-Math.toDegrees(Math.atan2(0.115 + 0.147868424 + 0.127868424 + 0.05 + 0.155 - 0.042, 1)), t3.pitchDeg(), 1e-6);
         var e = assertThrows(IllegalArgumentException.class, () -> AgentConfig.forRobotType(7));
-        assertEquals("robot type must be 0-4 (or -1 for nao.rsg), got 7", e.getMessage());
+        assertEquals("robot type must be 0-4, got 7", e.getMessage());
     }
 
     @Test
@@ -68,7 +68,7 @@ class HeadActionsTest {
     @Test
     void trackObjectFollowsAFixedPointOfTheField() {
         // Facing +y at the origin: the point (0, -3) is straight behind, (3, 0) to the right.
-        TrackObject t = TrackObject.point(C, new phalanx.localization.field.Vector2(3, 0), 0);
+        TrackObject t = TrackObject.point(C, new phalanx.model.field.Vector2(3, 0), 0);
         assertEquals(-90, t.head(World.at(0, 0, 90).situation()).yawDeg(), 1e-9);
     }
 

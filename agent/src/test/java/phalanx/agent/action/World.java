@@ -8,9 +8,9 @@ import phalanx.comm.perception.Side;
 import phalanx.localization.belief.PlayerBelief;
 import phalanx.localization.belief.WorldBelief;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,7 +1,7 @@
 package phalanx.agent.goalkeeper;
 
 import org.junit.jupiter.api.Test;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 import static org.junit.jupiter.api.Assertions.*;
 

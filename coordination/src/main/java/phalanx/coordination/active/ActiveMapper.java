@@ -5,8 +5,8 @@ import phalanx.coordination.CoordinationConfig.ActiveWeights;
 import phalanx.coordination.CoordinationConfig.CollisionConfig;
 import phalanx.coordination.features.FieldUtility;
 import phalanx.coordination.features.RouteCollision;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * Phase 4 of Algorithm 3, "Coordinate Active Players" (thesis 5.8, Algorithm 4): the on-ball player goes

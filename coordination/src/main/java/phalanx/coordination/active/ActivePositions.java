@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import phalanx.coordination.CoordinationConfig.ActivePositionsConfig;
 import phalanx.coordination.features.FieldUtility;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * Phase 3 of Algorithm 3, "Determine Active Positions" (thesis 5.7). Ball in our half (x < 0): the

@@ -3,8 +3,8 @@ package phalanx.coordination.active;
 import java.util.List;
 import phalanx.coordination.CoordinationConfig.OnBallConfig;
 import phalanx.coordination.beliefs.PlayerBelief;
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Angles;
+import phalanx.model.field.Vector2;
 
 /**
  * The on-ball player (thesis 5.8): the active player minimising Value_i = d_i + a·θ_i, where d_i is its

@@ -1,8 +1,8 @@
 package phalanx.coordination.beliefs;
 
 import java.util.List;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * The fused world state the coordination works from (thesis 5.4).

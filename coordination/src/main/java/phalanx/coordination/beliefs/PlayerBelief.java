@@ -1,6 +1,6 @@
 package phalanx.coordination.beliefs;
 
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * The coordinator's global belief about one player (thesis 5.4).

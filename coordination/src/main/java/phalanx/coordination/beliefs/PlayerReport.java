@@ -1,7 +1,7 @@
 package phalanx.coordination.beliefs;
 
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * One player's coordination message (thesis 5.3) as the coordinator holds it, in the team's own frame

@@ -1,8 +1,8 @@
 package phalanx.coordination.beliefs;
 
 import java.util.List;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * What the coordinator knows at the start of a round: the field, and the latest report of every player

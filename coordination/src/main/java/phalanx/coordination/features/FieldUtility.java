@@ -1,7 +1,7 @@
 package phalanx.coordination.features;
 
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * The value of a spot of the field (thesis 5.6): CurrentSide · x · (W/2 − |y|). In the team's own frame

@@ -3,7 +3,7 @@ package phalanx.coordination.formation;
 import java.util.Collections;
 import java.util.EnumMap;
 import java.util.Map;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /** A team formation: one position per role, in the team's own frame. */
 public record Formation(Map<Role, Vector2> positions) {

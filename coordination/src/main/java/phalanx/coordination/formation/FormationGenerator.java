@@ -3,8 +3,8 @@ package phalanx.coordination.formation;
 import java.util.EnumMap;
 import java.util.Map;
 import phalanx.coordination.CoordinationConfig.FormationConfig;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * Phase 5a of Algorithm 3, "Generate Team Formation" (thesis 5.9): a formation as a function of the ball.

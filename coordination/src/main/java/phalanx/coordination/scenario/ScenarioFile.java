@@ -8,9 +8,9 @@ import phalanx.coordination.Mode;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.ReportType;
 import phalanx.coordination.beliefs.TeamBeliefs;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * A plain-text coordination input, to reproduce and picture a situation (scripts/coord-snapshot).

@@ -8,8 +8,8 @@ import phalanx.coordination.beliefs.PlayerBelief;
 import phalanx.coordination.beliefs.ReportType;
 import phalanx.coordination.formation.Role;
 import phalanx.coordination.subsets.Subset;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 /**
  * A picture of one coordination round as SVG text (no library): the field in the team's own frame (our

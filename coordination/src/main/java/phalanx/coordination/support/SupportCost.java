@@ -4,7 +4,7 @@ import java.util.List;
 import phalanx.coordination.CoordinationConfig.CollisionConfig;
 import phalanx.coordination.CoordinationConfig.SupportWeights;
 import phalanx.coordination.features.RouteCollision;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * The support evaluation function (thesis 5.12): SupportCost = Σ_i w_d·C_d,i + w_c·C_c,i over the support

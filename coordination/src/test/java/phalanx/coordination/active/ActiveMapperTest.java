@@ -8,8 +8,8 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import phalanx.coordination.CoordinationConfig.ActiveWeights;
 import phalanx.coordination.CoordinationConfig.CollisionConfig;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 class ActiveMapperTest {
     private static final FieldSpec F = FieldSpec.V066;

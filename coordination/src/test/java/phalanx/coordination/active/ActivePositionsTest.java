@@ -6,8 +6,8 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import phalanx.coordination.CoordinationConfig.ActivePositionsConfig;
 import phalanx.coordination.features.FieldUtility;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 class ActivePositionsTest {
     private static final FieldSpec F = FieldSpec.V066;

@@ -7,7 +7,7 @@ import org.junit.jupiter.api.Test;
 import phalanx.coordination.CoordinationConfig.OnBallConfig;
 import phalanx.coordination.beliefs.PlayerBelief;
 import phalanx.coordination.beliefs.ReportType;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 class OnBallChooserTest {
     private static final Vector2 BALL = new Vector2(0, 0), GOAL = new Vector2(15, 0);

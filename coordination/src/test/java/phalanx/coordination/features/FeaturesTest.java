@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import org.junit.jupiter.api.Test;
 import phalanx.coordination.CoordinationConfig.CollisionConfig;
-import phalanx.localization.field.FieldSpec;
+import phalanx.model.field.FieldSpec;
 
 class FeaturesTest {
     private static final CollisionConfig C = CollisionConfig.THESIS;

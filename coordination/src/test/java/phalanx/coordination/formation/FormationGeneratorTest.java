@@ -9,8 +9,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Test;
 import phalanx.coordination.CoordinationConfig.FormationConfig;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 class FormationGeneratorTest {
     private static final FormationConfig C = FormationConfig.DEFAULT;

@@ -7,8 +7,8 @@ import java.util.Comparator;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import phalanx.coordination.CoordinationConfig.FormationConfig;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 class RoleAssignmentTest {
     private static final Vector2 BALL = new Vector2(4, 3);

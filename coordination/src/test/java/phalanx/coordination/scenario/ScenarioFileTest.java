@@ -9,8 +9,8 @@ import phalanx.coordination.Memory;
 import phalanx.coordination.Mode;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.ReportType;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 class ScenarioFileTest {
     private static String message(String text) {

@@ -11,9 +11,9 @@ import phalanx.coordination.Mode;
 import phalanx.coordination.TeamPlan;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 class CoordinationScheduleTest {
     private static final TeamBeliefs TEAM = new TeamBeliefs(FieldSpec.V066, List.of(

@@ -9,9 +9,9 @@ import phalanx.coordination.beliefs.BeliefsUpdate;
 import phalanx.coordination.beliefs.GlobalBeliefs;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 class SubsetsTest {
     /** Ball at the origin; player i stands i metres from it on the x axis; 5 is lost, 6 lies on the ground. */

@@ -8,7 +8,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import phalanx.coordination.CoordinationConfig.CollisionConfig;
 import phalanx.coordination.CoordinationConfig.SupportWeights;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 class SupportMapperTest {
     private static final CollisionConfig C = CollisionConfig.THESIS;

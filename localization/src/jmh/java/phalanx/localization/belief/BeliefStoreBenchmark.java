@@ -13,8 +13,8 @@ import phalanx.comm.perception.Perception;
 import phalanx.comm.recording.Recordings;
 import phalanx.comm.sexp.PerceptionParser;
 import phalanx.localization.LocalizationConfig;
-import phalanx.localization.body.NaoBody;
-import phalanx.localization.field.FieldSpec;
+import phalanx.model.robot.NaoModel;
+import phalanx.model.field.FieldSpec;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -43,7 +43,7 @@ public class BeliefStoreBenchmark {
         for (String line : Recordings.perceptorMessages(Recordings.named("S5_agent7"))) all.add(parser.parse(line));
         cycles = all.toArray(new Perception[0]);
         store = new BeliefStore(FieldSpec.V066, LocalizationConfig.DEFAULT.withFilter(LocalizationConfig.Filter.valueOf(filter)),
-                NaoBody.ofType(4), "ProbeTeam", null, 0);
+                NaoModel.ofType(4), "ProbeTeam", null, 0);
     }
 
     @Benchmark

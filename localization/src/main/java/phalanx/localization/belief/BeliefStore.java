@@ -11,13 +11,13 @@ import phalanx.comm.perception.Vector3;
 import phalanx.comm.perception.Vision;
 import phalanx.localization.LocalizationConfig;
 import phalanx.localization.body.CameraPose;
-import phalanx.localization.body.NaoBody;
+import phalanx.model.robot.NaoModel;
 import phalanx.localization.body.TiltEstimator;
 import phalanx.localization.fall.FallDetector;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 import phalanx.localization.filter.EkfPoseFilter;
 import phalanx.localization.filter.FifoPoseFilter;
 import phalanx.localization.filter.LocalizationFilter;
@@ -46,7 +46,7 @@ public final class BeliefStore {
 
     private final FieldSpec field;
     private final LocalizationConfig config;
-    private final NaoBody body;
+    private final NaoModel body;
     private final String teamName;
     private final SelfLocalizer localizer;
     private final PoseFilter selfFilter;
@@ -73,7 +73,7 @@ public final class BeliefStore {
      * @param side     our side, or null to learn it from the first GS message
      * @param unum     our uniform number, or 0 to learn it from the first GS message
      */
-    public BeliefStore(FieldSpec field, LocalizationConfig config, NaoBody body, String teamName, Side side, int unum) {
+    public BeliefStore(FieldSpec field, LocalizationConfig config, NaoModel body, String teamName, Side side, int unum) {
         this.field = field;
         this.config = config;
         this.body = body;

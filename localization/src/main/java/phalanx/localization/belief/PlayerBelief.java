@@ -1,8 +1,8 @@
 package phalanx.localization.belief;
 
 import phalanx.comm.perception.BodyPart;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * A player seen in vision (thesis 4.4.2): where it is relative to our body (level body frame,

@@ -2,8 +2,8 @@ package phalanx.localization.belief;
 
 import phalanx.comm.perception.Side;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 

@@ -1,10 +1,11 @@
 package phalanx.localization.body;
 
+import phalanx.model.robot.NaoModel;
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.JointAngles;
 import phalanx.comm.perception.Polar;
 import phalanx.comm.perception.Vector3;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * Where the camera is and how it is turned, relative to the body at one instant, so that a polar,
@@ -32,7 +33,7 @@ public final class CameraPose {
      * @param acc    accelerometer in the torso frame the server uses (+x right, +y forward, +z up);
      *               null, non-finite or near zero means "upright"
      */
-    public static CameraPose of(NaoBody body, JointAngles joints, Vector3 acc) {
+    public static CameraPose of(NaoModel body, JointAngles joints, Vector3 acc) {
         double yaw = angle(joints, Joint.HJ1), pitch = angle(joints, Joint.HJ2);
         // Body frame: +x forward, +y left, +z up (server torso frame: x right, y forward).
         double[] tilt = levelRotation(acc);
@@ -45,8 +46,8 @@ public final class CameraPose {
                 syaw * cp, cyaw, -syaw * sp,
                 sp, 0, cp};
         // Camera position: neck, up to the pitch axis, then the head centre 0.005 above that axis, turned.
-        double axis = NaoBody.NECK_ABOVE_TORSO + NaoBody.HEAD_ABOVE_NECK - NaoBody.PITCH_AXIS_BELOW_HEAD;
-        double r = NaoBody.PITCH_AXIS_BELOW_HEAD;
+        double axis = NaoModel.NECK_ABOVE_TORSO + NaoModel.HEAD_ABOVE_NECK - NaoModel.PITCH_AXIS_BELOW_HEAD;
+        double r = NaoModel.PITCH_AXIS_BELOW_HEAD;
         double[] camBody = {head[2] * r, head[5] * r, axis + head[8] * r};
         double[] m = mul(tilt, head);
         double[] c = apply(tilt, camBody);
@@ -60,7 +61,7 @@ public final class CameraPose {
     }
 
     /** Upright camera with the head turned by yaw and pitch (degrees): for tests and simple callers. */
-    public static CameraPose upright(NaoBody body, double yawDeg, double pitchDeg) {
+    public static CameraPose upright(NaoModel body, double yawDeg, double pitchDeg) {
         double[] d = new double[Joint.COUNT];
         d[Joint.HJ1.ordinal()] = yawDeg;
         d[Joint.HJ2.ordinal()] = pitchDeg;

@@ -9,11 +9,11 @@ import phalanx.localization.LocalizationConfig;
 import phalanx.localization.belief.BeliefStats;
 import phalanx.localization.belief.BeliefStore;
 import phalanx.localization.belief.WorldBelief;
-import phalanx.localization.body.NaoBody;
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.robot.NaoModel;
+import phalanx.model.field.Angles;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.io.IOException;
 import java.io.PrintStream;
@@ -83,7 +83,7 @@ public final class LocalizeEval {
                 if (t.find()) team = t.group(1);
             }
         }
-        BeliefStore store = new BeliefStore(FieldSpec.V066, config, NaoBody.ofType(type), team, null, 0);
+        BeliefStore store = new BeliefStore(FieldSpec.V066, config, NaoModel.ofType(type), team, null, 0);
         PerceptionParser parser = new PerceptionParser();
         Result r = new Result(prefix.getFileName().toString());
         int n = Math.min(perceptors.size(), truth.size());

@@ -1,8 +1,8 @@
 package phalanx.localization.filter;
 
 import phalanx.localization.LocalizationConfig;
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.Pose2;
+import phalanx.model.field.Angles;
+import phalanx.model.field.Pose2;
 import phalanx.localization.vision.LandmarkSighting;
 
 import java.util.List;

@@ -1,7 +1,7 @@
 package phalanx.localization.filter;
 
 import phalanx.localization.LocalizationConfig;
-import phalanx.localization.field.Pose2;
+import phalanx.model.field.Pose2;
 import phalanx.localization.vision.LandmarkSighting;
 
 import java.util.List;

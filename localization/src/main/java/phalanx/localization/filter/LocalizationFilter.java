@@ -1,8 +1,8 @@
 package phalanx.localization.filter;
 
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Angles;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 /**
  * Thesis 4.4.3, Algorithm 1: a FIFO queue of the MaxSize most recent agreeing estimates; the

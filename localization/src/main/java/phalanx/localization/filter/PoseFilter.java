@@ -1,6 +1,6 @@
 package phalanx.localization.filter;
 
-import phalanx.localization.field.Pose2;
+import phalanx.model.field.Pose2;
 import phalanx.localization.vision.LandmarkSighting;
 
 import java.util.List;

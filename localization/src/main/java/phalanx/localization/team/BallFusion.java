@@ -1,6 +1,6 @@
 package phalanx.localization.team;
 
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 import java.util.ArrayList;
 import java.util.List;

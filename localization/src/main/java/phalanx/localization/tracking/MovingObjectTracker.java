@@ -1,6 +1,6 @@
 package phalanx.localization.tracking;
 
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * Thesis 4.6, Track Moving Object: the direction and speed of a moving object from two sets of

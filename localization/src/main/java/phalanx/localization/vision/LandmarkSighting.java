@@ -1,7 +1,7 @@
 package phalanx.localization.vision;
 
 import phalanx.comm.perception.Landmark;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /**
  * One landmark seen in one vision frame: where it is (the team's own frame) and where it was seen,

@@ -1,10 +1,10 @@
 package phalanx.localization.vision;
 
 import phalanx.localization.LocalizationConfig;
-import phalanx.localization.field.Angles;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Angles;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 

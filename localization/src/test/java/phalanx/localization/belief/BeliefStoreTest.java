@@ -10,11 +10,11 @@ import phalanx.comm.perception.Side;
 import phalanx.comm.sexp.PerceptionParser;
 import phalanx.localization.LocalizationConfig;
 import phalanx.localization.Scenes;
-import phalanx.localization.body.NaoBody;
+import phalanx.model.robot.NaoModel;
 import phalanx.localization.fall.FallState;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 
@@ -25,7 +25,7 @@ class BeliefStoreTest {
     private static final Landmark[] RIGHT_END = {Landmark.F1R, Landmark.G1R, Landmark.G2R, Landmark.F2R};
 
     private BeliefStore store(LocalizationConfig.Filter f) {
-        return new BeliefStore(field, LocalizationConfig.DEFAULT.withFilter(f), NaoBody.ofType(0), "Us", null, 0);
+        return new BeliefStore(field, LocalizationConfig.DEFAULT.withFilter(f), NaoModel.ofType(0), "Us", null, 0);
     }
 
     private Perception frame(double t, Pose2 truth, Side side, Landmark... seen) {

@@ -1,5 +1,6 @@
 package phalanx.localization.body;
 
+import phalanx.model.robot.NaoModel;
 import org.junit.jupiter.api.Test;
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.Landmark;
@@ -9,9 +10,9 @@ import phalanx.comm.perception.Vector3;
 import phalanx.comm.recording.Recordings;
 import phalanx.comm.sexp.PerceptionParser;
 import phalanx.localization.eval.GroundTruth;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.ArrayList;
 import java.util.Collections;
@@ -34,7 +35,7 @@ class CameraPoseRecordedTest {
             List<String> lines = Recordings.perceptorMessages(Recordings.named(name));
             List<GroundTruth.Line> truth = GroundTruth.read(Recordings.groundTruthFile(Recordings.named(name)));
             PerceptionParser parser = new PerceptionParser();
-            NaoBody body = NaoBody.ofType(name.equals("S1") ? 0 : 4);
+            NaoModel body = NaoModel.ofType(name.equals("S1") ? 0 : 4);
             List<Double> errors = new ArrayList<>();
             double maxYaw = 0;
             for (int i = 0; i < lines.size(); i++) {

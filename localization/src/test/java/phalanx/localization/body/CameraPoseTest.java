@@ -1,5 +1,6 @@
 package phalanx.localization.body;
 
+import phalanx.model.robot.NaoModel;
 import org.junit.jupiter.api.Test;
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.JointAngles;
@@ -9,7 +10,7 @@ import phalanx.comm.perception.Vector3;
 import static org.junit.jupiter.api.Assertions.*;
 
 class CameraPoseTest {
-    private static final NaoBody BODY = NaoBody.ofType(0);
+    private static final NaoModel BODY = NaoModel.ofType(0);
 
     @Test
     void uprightStraightHeadSitsThe155MillimetresAboveTheTorso() {

@@ -111,7 +111,7 @@ class LocalizeEvalTest {
         var l304 = lines.get(303);
         assertEquals(10.0, l304.x(), 0.01);
         assertEquals(-150.0, l304.yawDeg(), 0.5);
-        var own = new phalanx.localization.field.Pose2(-10, -4, 30);
+        var own = new phalanx.model.field.Pose2(-10, -4, 30);
         var f = LocalizeEval.toField(own, phalanx.comm.perception.Side.RIGHT);
         assertEquals(10, f.x(), 1e-9);
         assertEquals(4, f.y(), 1e-9);

@@ -5,9 +5,9 @@ import phalanx.comm.perception.Landmark;
 import phalanx.comm.perception.Side;
 import phalanx.comm.perception.Vector3;
 import phalanx.localization.LocalizationConfig;
-import phalanx.localization.field.FieldSpec;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 import phalanx.localization.vision.LandmarkSighting;
 
 import java.util.ArrayList;

@@ -1,8 +1,8 @@
 package phalanx.localization.filter;
 
 import org.junit.jupiter.api.Test;
-import phalanx.localization.field.Pose2;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import static org.junit.jupiter.api.Assertions.*;
 

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 /** Clustering cases worked out by hand (thesis 5.4, Figure 5.3). */
 class BallFusionClusterTest {

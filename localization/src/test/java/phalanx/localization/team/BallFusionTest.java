@@ -1,7 +1,7 @@
 package phalanx.localization.team;
 
 import org.junit.jupiter.api.Test;
-import phalanx.localization.field.Vector2;
+import phalanx.model.field.Vector2;
 
 import java.util.Arrays;
 import java.util.List;

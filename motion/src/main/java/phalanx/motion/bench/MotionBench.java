@@ -10,7 +10,7 @@ import phalanx.motion.MotionLibrary;
 import phalanx.motion.control.JointVelocities;
 import phalanx.motion.control.MotionController;
 import phalanx.motion.control.MotionRequest;
-import phalanx.motion.kinematics.LegGeometry;
+import phalanx.model.robot.NaoModel;
 import phalanx.motion.walk.WalkConfig;
 import phalanx.motion.walk.WalkController;
 import phalanx.motion.walk.WalkVelocity;
@@ -124,7 +124,7 @@ public final class MotionBench {
     private Row measure(int type) throws IOException {
         Row row = new Row();
         row.type = type;
-        standingZ = LegGeometry.forType(type).standingTorsoHeight();
+        standingZ = NaoModel.ofType(type).standingTorsoHeight();
         connect(type);
         for (int t = 0; t < opt.trials(); t++) {
             if (opt.runs("walk")) walk(row);

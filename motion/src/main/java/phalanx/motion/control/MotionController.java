@@ -6,7 +6,7 @@ import phalanx.comm.perception.Vector3;
 import phalanx.motion.Motion;
 import phalanx.motion.MotionConfig;
 import phalanx.motion.MotionLibrary;
-import phalanx.motion.kinematics.JointLimits;
+import phalanx.model.robot.JointLimits;
 import phalanx.motion.phase.Check;
 import phalanx.motion.phase.Phase;
 import phalanx.motion.phase.PhaseMotion;

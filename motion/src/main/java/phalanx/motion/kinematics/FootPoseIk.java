@@ -1,5 +1,7 @@
 package phalanx.motion.kinematics;
 
+import phalanx.model.field.Angles;
+import phalanx.model.robot.NaoModel;
 /**
  * Inverse and forward kinematics of one whole leg of the simulated Nao, hip yaw-pitch included, so
  * a foot can be put at a position AND turned (the walk's turning steps).
@@ -16,8 +18,8 @@ package phalanx.motion.kinematics;
  *       model drives them independently. Since each can only turn its foot outward, a walk turns
  *       with the leading foot yawed out and the trailing foot following (see the walk's README).</li>
  *   <li>lj2, hip roll, about y (positive moves the leg to the robot's left);</li>
- *   <li>lj3, hip pitch, about x (positive swings the thigh forward); thigh {@link LegGeometry#thigh()};</li>
- *   <li>lj4, knee, about x (bends negative); shank {@link LegGeometry#shank()};</li>
+ *   <li>lj3, hip pitch, about x (positive swings the thigh forward); thigh {@link NaoModel#thigh()};</li>
+ *   <li>lj4, knee, about x (bends negative); shank {@link NaoModel#shank()};</li>
  *   <li>lj5, ankle pitch, about x (positive lifts the toes); lj6, ankle roll, about y.</li>
  * </ol>
  * Rotations are right-handed about the axes above (the simulator's hinge convention, which the
@@ -42,7 +44,7 @@ public final class FootPoseIk {
      * {@code pitchDeg} (toes up positive) — a flat foot under a torso leaning forward by λ has
      * pitch λ. Targets out of reach are pulled in along the hip-ankle line.
      */
-    public static Angles solve(LegGeometry g, boolean left, double x, double y, double z, double yawDeg, double pitchDeg) {
+    public static Angles solve(NaoModel g, boolean left, double x, double y, double z, double yawDeg, double pitchDeg) {
         double[] q = new double[6];
         new FootPoseIk().solveInto(g, left, x, y, z, yawDeg, pitchDeg, q, 0);
         return new Angles(q[0], q[1], q[2], q[3], q[4], q[5]);
@@ -52,7 +54,7 @@ public final class FootPoseIk {
      * {@link #solve} without allocating: the six angles in degrees, in the order of {@link Angles},
      * go to {@code out[at]} to {@code out[at + 5]}.
      */
-    public void solveInto(LegGeometry g, boolean left, double x, double y, double z, double yawDeg, double pitchDeg,
+    public void solveInto(NaoModel g, boolean left, double x, double y, double z, double yawDeg, double pitchDeg,
                           double[] out, int at) {
         mul(rotX(Math.toRadians(pitchDeg), r1), rotZ(Math.toRadians(yawDeg), r2), rf);
         // the hip seen from the foot: v = Rf^T (-p)
@@ -92,7 +94,7 @@ public final class FootPoseIk {
      * Forward kinematics of the same chain: {x, y, z} of the ankle relative to the hip (metres)
      * followed by the foot's rotation relative to the torso (row-major 3x3): 12 numbers.
      */
-    public static double[] forward(LegGeometry g, boolean left, Angles q) {
+    public static double[] forward(NaoModel g, boolean left, Angles q) {
         double[] axis = left ? new double[] {-S, 0, -S} : new double[] {-S, 0, S};
         double[] hip = mul(rot(axis, Math.toRadians(q.yawPitch())), rotY(Math.toRadians(q.hipRoll())));
         double[] thigh = mul(hip, rotX(Math.toRadians(q.hipPitch())));

@@ -1,5 +1,6 @@
 package phalanx.motion.kinematics;
 
+import phalanx.model.robot.NaoModel;
 /**
  * Inverse kinematics of one leg with the hip yaw-pitch at 0 and the foot kept parallel to the
  * torso. Frame of the simulator's Nao (naoleg.rsg): x right, y forward, z up; a positive hip pitch
@@ -16,7 +17,7 @@ public final class LegIk {
      * The angles that put the ankle at {@code forward}, {@code left}, {@code down} metres from the
      * hip joint. Out-of-reach targets are pulled in to the stretched leg.
      */
-    public static LegAngles solve(LegGeometry g, double forward, double left, double down) {
+    public static LegAngles solve(NaoModel g, double forward, double left, double down) {
         double roll = Math.atan2(left, down);            // positive roll moves the foot to the left
         double planeDown = Math.hypot(left, down);        // hip to ankle in the leg's plane
         double a = g.thigh(), b = g.shank();
@@ -32,7 +33,7 @@ public final class LegIk {
     }
 
     /** Forward kinematics of the same chain: the ankle's (forward, left, down) from the hip, metres. */
-    public static double[] ankle(LegGeometry g, LegAngles q) {
+    public static double[] ankle(NaoModel g, LegAngles q) {
         double h = Math.toRadians(q.hipPitch()), k = Math.toRadians(q.knee()), r = Math.toRadians(q.hipRoll());
         double forward = g.thigh() * Math.sin(h) + g.shank() * Math.sin(h + k);
         double planeDown = g.thigh() * Math.cos(h) + g.shank() * Math.cos(h + k);

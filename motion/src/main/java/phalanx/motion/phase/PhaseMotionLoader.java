@@ -6,7 +6,7 @@ import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.dataformat.xml.XmlFactory;
 import phalanx.comm.perception.Joint;
 import phalanx.motion.MotionFileException;
-import phalanx.motion.kinematics.JointLimits;
+import phalanx.model.robot.JointLimits;
 
 import java.io.IOException;
 import java.io.InputStream;

@@ -5,7 +5,7 @@ import phalanx.comm.perception.JointAngles;
 import phalanx.comm.perception.Vector3;
 import phalanx.motion.MotionConfig;
 import phalanx.motion.control.JointVelocities;
-import phalanx.motion.kinematics.LegGeometry;
+import phalanx.model.robot.NaoModel;
 
 /**
  * Runs the {@link WalkGenerator} against the robot: each cycle the gait's joint targets (plus the
@@ -33,7 +33,7 @@ public final class WalkController {
         this.config = config;
         this.dt = motion.cycleSeconds();
         this.latency = motion.latencyCycles();
-        this.generator = new WalkGenerator(config, LegGeometry.forType(robotType), dt);
+        this.generator = new WalkGenerator(config, NaoModel.ofType(robotType), dt);
         for (Joint j : Joint.values()) caps[j.ordinal()] = speedCap(robotType, j, motion.maxJointSpeed());
     }
 

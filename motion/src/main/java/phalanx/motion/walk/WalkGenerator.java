@@ -2,8 +2,8 @@ package phalanx.motion.walk;
 
 import phalanx.comm.perception.Joint;
 import phalanx.motion.kinematics.FootPoseIk;
-import phalanx.motion.kinematics.JointLimits;
-import phalanx.motion.kinematics.LegGeometry;
+import phalanx.model.robot.JointLimits;
+import phalanx.model.robot.NaoModel;
 
 import java.util.Arrays;
 
@@ -38,7 +38,7 @@ public final class WalkGenerator {
     static final double CENTRE_MARGIN = 0.003;
 
     private final WalkConfig c;
-    private final LegGeometry g;
+    private final NaoModel g;
     private final double dt;
 
     private double vf, vl, vt;                                 // current velocity, m/s, m/s, deg/s
@@ -58,7 +58,7 @@ public final class WalkGenerator {
     private final FootPoseIk ik = new FootPoseIk();
     private static final Joint[] JOINTS = Joint.values();
 
-    public WalkGenerator(WalkConfig config, LegGeometry geometry, double cycleSeconds) {
+    public WalkGenerator(WalkConfig config, NaoModel geometry, double cycleSeconds) {
         this.c = config;
         this.g = geometry;
         this.dt = cycleSeconds;

@@ -6,7 +6,7 @@ import phalanx.motion.MotionConfig;
 import phalanx.motion.bench.BenchRig;
 import phalanx.motion.bench.MonitorScene;
 import phalanx.motion.control.JointVelocities;
-import phalanx.motion.kinematics.LegGeometry;
+import phalanx.model.robot.NaoModel;
 
 import java.io.IOException;
 import java.util.LinkedHashMap;
@@ -269,7 +269,7 @@ public final class WalkTrial {
     /** Trainer move to (x, y) facing {@code headingDeg} (0 = +x), fresh walk, 1.5 s of standing. */
     private void place(WalkConfig c, double x, double y, double headingDeg) throws IOException {
         trainer("(ball (pos 20 -20 0.042))");
-        LegGeometry g = LegGeometry.forType(type);
+        NaoModel g = NaoModel.ofType(type);
         double z = g.ankleAboveSole() + c.legExtension() * (g.thigh() + g.shank()) + g.hipBelowTorso() + 0.03;
         // the move's angle 0 faces +y (recordings README)
         trainer(String.format(Locale.ROOT, "(agent (unum 1) (team Left) (move %.3f %.3f %.3f %.1f))", x, y, z, headingDeg - 90));
@@ -279,7 +279,7 @@ public final class WalkTrial {
 
     private boolean fallen() {
         MonitorScene.Pose p = torso();
-        double standing = LegGeometry.forType(type).standingTorsoHeight();
+        double standing = NaoModel.ofType(type).standingTorsoHeight();
         return p != null && (p.upZ() < 0.5 || p.z() < 0.5 * standing);
     }
 

@@ -2,7 +2,7 @@ package phalanx.motion.webots;
 
 import phalanx.comm.perception.Joint;
 import phalanx.motion.MotionFileException;
-import phalanx.motion.kinematics.JointLimits;
+import phalanx.model.robot.JointLimits;
 
 import java.io.BufferedReader;
 import java.io.IOException;

@@ -1,11 +1,12 @@
 package phalanx.motion.kinematics;
 
+import phalanx.model.robot.NaoModel;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.*;
 
 class FootPoseIkTest {
-    private static final LegGeometry G = LegGeometry.TYPE_0; // thigh 0.12, shank 0.10
+    private static final NaoModel G = NaoModel.TYPE_0; // thigh 0.12, shank 0.10
 
     @Test
     void straightLegBelowTheHipIsAllZero() {

@@ -6,7 +6,7 @@ import phalanx.comm.perception.JointAngles;
 import phalanx.comm.perception.Vector3;
 import phalanx.motion.MotionConfig;
 import phalanx.motion.control.JointVelocities;
-import phalanx.motion.kinematics.LegGeometry;
+import phalanx.model.robot.NaoModel;
 
 import java.util.Arrays;
 
@@ -33,7 +33,7 @@ class WalkControllerTest {
     void velocityIsTheRemainingErrorOverOneCycleMinusTheCommandOnItsWay() {
         WalkConfig c = noFeedback();
         WalkController w = new WalkController(c, 0, MotionConfig.DEFAULT);
-        double[] target = new WalkGenerator(c, LegGeometry.TYPE_0, 0.02).step(WalkVelocity.ZERO);
+        double[] target = new WalkGenerator(c, NaoModel.TYPE_0, 0.02).step(WalkVelocity.ZERO);
         // knee target about -60 deg from 0: far beyond one cycle at the cap, so the cap (6.1395 rad/s) applies
         JointVelocities v = w.step(all(0), STILL, UPRIGHT, WalkVelocity.ZERO);
         assertEquals(-6.1395, v.radPerSecond(Joint.LLJ4), 1e-12);
@@ -69,7 +69,7 @@ class WalkControllerTest {
         WalkConfig c = noFeedback().with("gyroPitchGain", 0.02);
         WalkController plain = new WalkController(noFeedback(), 0, MotionConfig.DEFAULT);
         WalkController fed = new WalkController(c, 0, MotionConfig.DEFAULT);
-        double[] d = new WalkGenerator(noFeedback(), LegGeometry.TYPE_0, 0.02).step(WalkVelocity.ZERO); // at the standing pose
+        double[] d = new WalkGenerator(noFeedback(), NaoModel.TYPE_0, 0.02).step(WalkVelocity.ZERO); // at the standing pose
         d[Joint.LLJ7.ordinal()] = Double.NaN;
         d[Joint.RLJ7.ordinal()] = Double.NaN;
         JointAngles at = new JointAngles(d);

@@ -2,7 +2,7 @@ package phalanx.motion.walk;
 
 import org.junit.jupiter.api.Test;
 import phalanx.comm.perception.Joint;
-import phalanx.motion.kinematics.LegGeometry;
+import phalanx.model.robot.NaoModel;
 
 import java.util.Random;
 
@@ -10,7 +10,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 class WalkGeneratorTest {
     private static final double DT = 0.02;
-    private static final LegGeometry G = LegGeometry.TYPE_0;
+    private static final NaoModel G = NaoModel.TYPE_0;
 
     /** A plain config for hand-checked numbers: no lean, no sway, leg height 0.20 m (0.20 / 0.22 of the leg). */
     private static WalkConfig plain() {

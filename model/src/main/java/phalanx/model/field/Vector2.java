@@ -1,4 +1,4 @@
-package phalanx.localization.field;
+package phalanx.model.field;
 
 /** A point or direction on the ground plane, metres. */
 public record Vector2(double x, double y) {

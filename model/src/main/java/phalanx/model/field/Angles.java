@@ -1,4 +1,4 @@
-package phalanx.localization.field;
+package phalanx.model.field;
 
 /** Angle arithmetic in degrees. */
 public final class Angles {

@@ -1,4 +1,4 @@
-package phalanx.localization.field;
+package phalanx.model.field;
 
 /**
  * A position and orientation on the ground plane: metres and degrees, counter-clockwise from +x,

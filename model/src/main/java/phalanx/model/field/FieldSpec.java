@@ -1,4 +1,4 @@
-package phalanx.localization.field;
+package phalanx.model.field;
 
 import phalanx.comm.perception.Landmark;
 import phalanx.comm.perception.Side;

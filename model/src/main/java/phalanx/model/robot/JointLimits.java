@@ -1,4 +1,4 @@
-package phalanx.motion.kinematics;
+package phalanx.model.robot;
 
 import phalanx.comm.perception.Joint;
 

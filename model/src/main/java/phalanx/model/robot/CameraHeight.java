@@ -1,4 +1,4 @@
-package phalanx.motion.kinematics;
+package phalanx.model.robot;
 
 import phalanx.comm.perception.Joint;
 import phalanx.comm.perception.JointAngles;
@@ -12,7 +12,7 @@ public final class CameraHeight {
     private CameraHeight() {}
 
     /** Height of the camera above the ground in metres, assuming flat feet and an upright head. */
-    public static double of(LegGeometry g, JointAngles joints) {
+    public static double of(NaoModel g, JointAngles joints) {
         double left = leg(g, joints.degrees(Joint.LLJ3), joints.degrees(Joint.LLJ4), joints.degrees(Joint.LLJ5));
         double right = leg(g, joints.degrees(Joint.RLJ3), joints.degrees(Joint.RLJ4), joints.degrees(Joint.RLJ5));
         if (Double.isNaN(left)) return right;
@@ -20,7 +20,7 @@ public final class CameraHeight {
         return Math.max(left, right);
     }
 
-    private static double leg(LegGeometry g, double hipDeg, double kneeDeg, double ankleDeg) {
+    private static double leg(NaoModel g, double hipDeg, double kneeDeg, double ankleDeg) {
         // Segment tilts from the vertical, walking up from the flat foot: shank -ankle, thigh -ankle-knee, torso -ankle-knee-hip.
         double shank = Math.toRadians(-ankleDeg);
         double thigh = shank - Math.toRadians(kneeDeg);
