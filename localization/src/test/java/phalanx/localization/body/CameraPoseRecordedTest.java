@@ -9,7 +9,7 @@ import phalanx.comm.perception.Polar;
 import phalanx.comm.perception.Vector3;
 import phalanx.comm.recording.Recordings;
 import phalanx.comm.sexp.PerceptionParser;
-import phalanx.localization.eval.GroundTruth;
+import phalanx.comm.recording.GroundTruth;
 import phalanx.model.field.FieldSpec;
 import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;

@@ -9,7 +9,7 @@ import phalanx.comm.recording.Recordings;
 import phalanx.comm.sexp.PerceptionParser;
 import phalanx.localization.LocalizationConfig;
 import phalanx.localization.Scenes;
-import phalanx.localization.eval.GroundTruth;
+import phalanx.comm.recording.GroundTruth;
 
 import java.nio.file.Path;
 import java.util.List;

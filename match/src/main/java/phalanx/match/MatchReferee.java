@@ -1,0 +1,46 @@
+package phalanx.match;
+
+import java.nio.file.Path;
+import java.util.Set;
+
+/**
+ * scripts/match: one match between two teams given as start commands, on a server of its own.
+ * Exit status 0 when the game reached GameOver, 1 when it did not (the JSON says why), 2 on a usage error.
+ */
+public final class MatchReferee {
+    static final String USAGE = """
+            usage: scripts/match --left NAME='COMMAND' --right NAME='COMMAND' [options]
+              COMMAND starts a team; {host} {port} {dir} are replaced by 127.0.0.1, the agent port and a log
+              folder for that team, e.g. --left "Phalanx=scripts/start.sh {host} {port} Phalanx --log-dir {dir}".
+              --left starts first and so normally plays on the left.
+              --dir DIR            where the server, team and match logs go (default /tmp/phalanx-matches/<time>-A-vs-B)
+              --out FILE           the result JSON (default DIR/result.json)
+            """ + MatchOptions.HELP;
+
+    private MatchReferee() { }
+
+    public static void main(String[] argv) {
+        MatchRunner runner;
+        try {
+            Args a = MatchOptions.parse(argv, USAGE, "match", Set.of("left", "right", "dir", "out"), Set.of());
+            if (a.get("left", null) == null || a.get("right", null) == null) {
+                throw new IllegalArgumentException("match: both --left and --right are needed");
+            }
+            TeamCommand left = TeamCommand.parse(a.get("left", null));
+            TeamCommand right = TeamCommand.parse(a.get("right", null));
+            Path dir = Path.of(a.get("dir", "/tmp/phalanx-matches/" + MatchOptions.stamp() + "-" + left.label() + "-vs-" + right.label()));
+            Path out = Path.of(a.get("out", dir.resolve("result.json").toString()));
+            runner = new MatchRunner(MatchOptions.config(a, left, right, dir, out), System.out);
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            System.err.println(e.getMessage());
+            System.err.println("(scripts/match --help for the options)");
+            System.exit(2);
+            return;
+        }
+        MatchRunner r = runner;
+        Thread hook = new Thread(() -> r.abort("interrupted (Ctrl-C or SIGTERM)"), "match-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        MatchResult result = r.run();
+        System.exit(result != null && result.completed() ? 0 : 1);
+    }
+}
