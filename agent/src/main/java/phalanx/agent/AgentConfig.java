@@ -185,7 +185,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
 
     /**
      * @param onBallDistance  while the coordinator is quiet a player goes On Ball when the ball is this
-     *                        near and no teammate is seen closer (ours; comm.team.FieldPlayer's fallback)
+     *                        near and no teammate is seen closer (ours; comm.team.round.FieldPlayerRounds's fallback)
      * @param hysteresis      a teammate must be this much closer to take the ball over (ours)
      */
     public record Fallback(double onBallDistance, double hysteresis) {

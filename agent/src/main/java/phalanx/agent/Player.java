@@ -8,7 +8,7 @@ import phalanx.agent.action.FieldPlayerBehaviour;
 import phalanx.agent.goalkeeper.GoalkeeperBehaviour;
 import phalanx.agent.roboviz.RoboViz;
 import phalanx.agent.team.TeamChannel;
-import phalanx.agent.team.TeamCoordination;
+import phalanx.agent.team.RoundPlanner;
 import phalanx.comm.team.ChannelConfig;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.wire.ServerConnection;
@@ -111,7 +111,7 @@ public final class Player {
                                          TeamKey key, int unum, PlayerParts self) {
         if (unum == channel.coordinator()) {
             GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(config(o)));
-            TeamCoordination procedure = new TeamCoordination(new Coordinator(), field, unum, beliefs::belief,
+            RoundPlanner procedure = new RoundPlanner(new Coordinator(), field, unum, beliefs::belief,
                     self::playMode, keeper::hasBall);
             return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
         }

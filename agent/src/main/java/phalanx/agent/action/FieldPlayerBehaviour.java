@@ -31,7 +31,7 @@ import java.util.logging.Logger;
  *       facing the ball (or the opponent's goal when the ball is unknown);</li>
  *   <li>without a home position, Turn To Ball, or Look For Ball when the ball is unknown.</li>
  * </ul>
- * This is the fallback {@code comm.team.FieldPlayer} describes. The action instance is kept while
+ * This is the fallback {@code comm.team.round.FieldPlayerRounds} describes. The action instance is kept while
  * the order's action id stays the same (new coordinates or directions retarget it), so On Ball's
  * state machine survives the coordinator repeating the order every round.
  */

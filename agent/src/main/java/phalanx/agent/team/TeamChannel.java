@@ -4,10 +4,10 @@ import phalanx.comm.perception.Hear;
 import phalanx.comm.perception.PlayMode;
 import phalanx.comm.team.Action;
 import phalanx.comm.team.ChannelConfig;
-import phalanx.comm.team.ChannelEvent;
-import phalanx.comm.team.ChannelOutput;
-import phalanx.comm.team.Coordinator;
-import phalanx.comm.team.FieldPlayer;
+import phalanx.comm.team.round.ChannelEvent;
+import phalanx.comm.team.round.ChannelOutput;
+import phalanx.comm.team.round.CoordinatorRounds;
+import phalanx.comm.team.round.FieldPlayerRounds;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.team.TimeSlices;
 import phalanx.localization.belief.WorldBelief;
@@ -23,24 +23,24 @@ import java.util.logging.Logger;
 public final class TeamChannel {
     private static final Logger LOG = Logger.getLogger(TeamChannel.class.getName());
 
-    private final Coordinator coordinator;   // player 1
-    private final FieldPlayer fieldPlayer;   // players 2..n
+    private final CoordinatorRounds coordinator;   // player 1
+    private final FieldPlayerRounds fieldPlayer;   // players 2..n
     private final int unum;
-    private final TeamCoordination procedure;   // player 1
+    private final RoundPlanner procedure;   // player 1
 
-    private TeamChannel(Coordinator coordinator, FieldPlayer fieldPlayer, int unum, TeamCoordination procedure) {
+    private TeamChannel(CoordinatorRounds coordinator, FieldPlayerRounds fieldPlayer, int unum, RoundPlanner procedure) {
         this.coordinator = coordinator;
         this.fieldPlayer = fieldPlayer;
         this.unum = unum;
         this.procedure = procedure;
     }
 
-    public static TeamChannel coordinator(ChannelConfig config, TeamKey key, String team, TeamCoordination procedure) {
-        return new TeamChannel(new Coordinator(config, key, team, procedure), null, config.coordinator(), procedure);
+    public static TeamChannel coordinator(ChannelConfig config, TeamKey key, String team, RoundPlanner procedure) {
+        return new TeamChannel(new CoordinatorRounds(config, key, team, procedure), null, config.coordinator(), procedure);
     }
 
     public static TeamChannel fieldPlayer(ChannelConfig config, TeamKey key, String team, int unum) {
-        return new TeamChannel(null, new FieldPlayer(config, unum, key, team), unum, null);
+        return new TeamChannel(null, new FieldPlayerRounds(config, unum, key, team), unum, null);
     }
 
     /** On the goalkeeper, the last coordination round's plan (for debug drawing); else null. */
@@ -69,6 +69,6 @@ public final class TeamChannel {
 
     /** True on a field player whose coordinator has gone quiet: act on own beliefs. */
     public boolean coordinatorQuiet() {
-        return fieldPlayer != null && fieldPlayer.mode() == FieldPlayer.Mode.AUTONOMOUS;
+        return fieldPlayer != null && fieldPlayer.mode() == FieldPlayerRounds.Mode.AUTONOMOUS;
     }
 }

@@ -1,5 +1,7 @@
 package phalanx.comm.team;
 
+import phalanx.comm.team.round.FieldPlayerRounds;
+import phalanx.comm.team.round.ChannelOutput;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Mode;
@@ -24,7 +26,7 @@ import java.util.concurrent.TimeUnit;
 public class TeamChannelBenchmark {
     private TeamMessageCodec codec;
     private String report, foreign;
-    private FieldPlayer player;
+    private FieldPlayerRounds player;
     private List<Hear> heard;
     private TeamMessage.Complete complete;
     private long cycle = 1_000;
@@ -36,7 +38,7 @@ public class TeamChannelBenchmark {
         complete = new TeamMessage.Complete(5, -3.21, 4.56, 33, 1.23, -0.5);
         report = codec.encode(complete, 998);
         foreign = "Zq9-x_Lm3Pp0aB7cD1eF";
-        player = new FieldPlayer(ChannelConfig.DEFAULT, 4, key, "Phalanx");
+        player = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, key, "Phalanx");
         heard = List.of(new Hear("Phalanx", 0, false, 30, report), new Hear("Rival", 0, false, 120, foreign));
     }
 

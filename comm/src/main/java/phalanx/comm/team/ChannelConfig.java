@@ -84,17 +84,17 @@ public record ChannelConfig(int players, int coordinator, int slotCycles,
     }
 
     /** Report slot of a field player, 0-based, counted from the round's first report slot. */
-    int reportSlot(int unum) {
+    public int reportSlot(int unum) {
         return unum < coordinator ? unum - 1 : unum - 2;
     }
 
     /** Number of field players, each owning one report slot per round. */
-    int fieldPlayers() {
+    public int fieldPlayers() {
         return players - 1;
     }
 
     /** The pause rounded up to whole slots, so every round stays on the slot grid. */
-    int pauseSlots() {
+    public int pauseSlots() {
         return (roundPauseCycles + slotCycles - 1) / slotCycles;
     }
 }

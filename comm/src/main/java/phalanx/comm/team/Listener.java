@@ -8,18 +8,18 @@ import phalanx.comm.team.TeamMessageCodec.Rejection;
  * The hear side shared by both state machines: skips one's own messages, drops messages the server
  * labelled with another team without checking them, checks the rest and counts rejections.
  */
-final class Listener {
+public final class Listener {
     private final TeamMessageCodec codec;
     private final String team;
     private final long[] rejected = new long[Rejection.values().length];
 
-    Listener(TeamMessageCodec codec, String team) {
+    public Listener(TeamMessageCodec codec, String team) {
         this.codec = codec;
         this.team = team;
     }
 
     /** Our message in this hear, or null (own, foreign or failing the check: counted). */
-    Decoded accept(Hear h, long cycle) {
+    public Decoded accept(Hear h, long cycle) {
         if (h == null || h.self()) return null;
         if (team != null && h.team() != null && !team.equals(h.team())) {
             rejected[Rejection.FOREIGN_TEAM.ordinal()]++;
@@ -33,7 +33,7 @@ final class Listener {
         return d;
     }
 
-    long rejected(Rejection r) {
+    public long rejected(Rejection r) {
         return rejected[r.ordinal()];
     }
 }

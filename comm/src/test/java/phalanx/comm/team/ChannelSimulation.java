@@ -1,5 +1,10 @@
 package phalanx.comm.team;
 
+import phalanx.comm.team.round.FieldPlayerRounds;
+import phalanx.comm.team.round.CoordinatorRounds;
+import phalanx.comm.team.round.CoordinationProcedure;
+import phalanx.comm.team.round.ChannelOutput;
+import phalanx.comm.team.round.ChannelEvent;
 import phalanx.comm.perception.Hear;
 import phalanx.comm.perception.PlayMode;
 
@@ -11,7 +16,7 @@ import java.util.Random;
 import java.util.Set;
 
 /**
- * Eleven of our players (a {@link Coordinator} and ten {@link FieldPlayer}s) talking through a
+ * Eleven of our players (a {@link CoordinatorRounds} and ten {@link FieldPlayerRounds}s) talking through a
  * {@link SimulatedServer}, optionally with eleven opponents talking too. Deterministic (seeded).
  * Measures, per round: the cycles until the coordinator has every report, and until the last field
  * player has heard its action. A SIMULATION of the server's rules, not a measurement in rcssserver3d.
@@ -88,12 +93,12 @@ final class ChannelSimulation {
             }
             return out;
         };
-        Coordinator coordinator = new Coordinator(config, key, TEAM, procedure);
-        FieldPlayer[] players = new FieldPlayer[n + 1];
+        CoordinatorRounds coordinator = new CoordinatorRounds(config, key, TEAM, procedure);
+        FieldPlayerRounds[] players = new FieldPlayerRounds[n + 1];
         int[] index = new int[n + 1];
         long[] connectAt = new long[n + 1];
         for (int u = 1; u <= n; u++) {
-            if (u != config.coordinator()) players[u] = new FieldPlayer(config, u, key, TEAM);
+            if (u != config.coordinator()) players[u] = new FieldPlayerRounds(config, u, key, TEAM);
             connectAt[u] = (long) (u - 1) * connectEvery;
             index[u] = -1;
         }
@@ -172,7 +177,7 @@ final class ChannelSimulation {
         long rejected = 0;
         for (TeamMessageCodec.Rejection why : TeamMessageCodec.Rejection.values()) {
             rejected += coordinator.rejected(why);
-            for (FieldPlayer p : players) if (p != null) rejected += p.rejected(why);
+            for (FieldPlayerRounds p : players) if (p != null) rejected += p.rejected(why);
         }
         return new Result(startSaid, rounds, wrongReports[0], wrongActions, rejected);
     }

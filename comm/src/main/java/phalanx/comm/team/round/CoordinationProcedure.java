@@ -1,5 +1,6 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
+import phalanx.comm.team.Action;
 import java.util.List;
 
 /**

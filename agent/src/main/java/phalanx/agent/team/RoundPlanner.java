@@ -4,8 +4,8 @@ import phalanx.comm.perception.PlayMode;
 import phalanx.comm.perception.Side;
 import phalanx.comm.team.Action;
 import phalanx.comm.team.ActionId;
-import phalanx.comm.team.CoordinationProcedure;
-import phalanx.comm.team.RoundReports;
+import phalanx.comm.team.round.CoordinationProcedure;
+import phalanx.comm.team.round.RoundReports;
 import phalanx.comm.team.TeamMessage;
 import phalanx.coordination.Assignment;
 import phalanx.coordination.Coordinator;
@@ -28,8 +28,8 @@ import java.util.logging.Logger;
  * goalkeeper's own, run the coordination (phalanx.coordination) and turn its assignments into the
  * action messages field players carry out.
  */
-public final class TeamCoordination implements CoordinationProcedure {
-    private static final Logger LOG = Logger.getLogger(TeamCoordination.class.getName());
+public final class RoundPlanner implements CoordinationProcedure {
+    private static final Logger LOG = Logger.getLogger(RoundPlanner.class.getName());
 
     private final Coordinator coordinator;
     private final FieldSpec field;
@@ -40,7 +40,7 @@ public final class TeamCoordination implements CoordinationProcedure {
     private Memory memory = Memory.NONE;
     private TeamPlan lastPlan;
 
-    public TeamCoordination(Coordinator coordinator, FieldSpec field, int selfUnum, Supplier<WorldBelief> ownBelief,
+    public RoundPlanner(Coordinator coordinator, FieldSpec field, int selfUnum, Supplier<WorldBelief> ownBelief,
                             Supplier<PlayMode> playMode, BooleanSupplier goalkeeperHasBall) {
         this.coordinator = coordinator;
         this.field = field;

@@ -1,5 +1,12 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ChannelConfig;
+import phalanx.comm.team.Listener;
+import phalanx.comm.team.TimeSlices;
+import phalanx.comm.team.TeamKey;
+import phalanx.comm.team.TeamMessageCodec;
+import phalanx.comm.team.TeamMessage;
 import phalanx.comm.perception.Hear;
 import phalanx.comm.perception.PlayMode;
 import phalanx.comm.team.TeamMessageCodec.Decoded;
@@ -30,8 +37,8 @@ import java.util.logging.Logger;
  * otherwise Walk to Coordinate to its formation position for its uniform number, facing the ball.
  * Meanwhile it announces itself again so a restarted coordinator finds it.
  */
-public final class FieldPlayer {
-    private static final Logger LOG = Logger.getLogger(FieldPlayer.class.getName());
+public final class FieldPlayerRounds {
+    private static final Logger LOG = Logger.getLogger(FieldPlayerRounds.class.getName());
     private static final long NONE = Long.MIN_VALUE;
 
     public enum Mode { AUTONOMOUS, COORDINATED }
@@ -49,7 +56,7 @@ public final class FieldPlayer {
     private long lastRoundTraffic = NONE;
     private Action current;
 
-    public FieldPlayer(ChannelConfig config, int unum, TeamKey key, String teamName) {
+    public FieldPlayerRounds(ChannelConfig config, int unum, TeamKey key, String teamName) {
         if (unum < 1 || unum > config.players() || unum == config.coordinator()) {
             throw new IllegalArgumentException("a field player's uniform number must be 1-" + config.players()
                     + " and not the coordinator's (" + config.coordinator() + "), got " + unum);

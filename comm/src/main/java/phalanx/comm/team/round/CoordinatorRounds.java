@@ -1,5 +1,12 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ChannelConfig;
+import phalanx.comm.team.Listener;
+import phalanx.comm.team.TimeSlices;
+import phalanx.comm.team.TeamKey;
+import phalanx.comm.team.TeamMessageCodec;
+import phalanx.comm.team.TeamMessage;
 import phalanx.comm.perception.Hear;
 import phalanx.comm.perception.PlayMode;
 import phalanx.comm.team.TeamMessageCodec.Decoded;
@@ -33,8 +40,8 @@ import java.util.logging.Logger;
  * A field player with no report for inactiveAfterMissedRounds rounds is inactive: not waited for, and
  * passed to the procedure as inactive, until it is heard again.
  */
-public final class Coordinator {
-    private static final Logger LOG = Logger.getLogger(Coordinator.class.getName());
+public final class CoordinatorRounds {
+    private static final Logger LOG = Logger.getLogger(CoordinatorRounds.class.getName());
     private static final long NONE = Long.MIN_VALUE;
 
     public enum Phase { INIT, STARTING, REPORTS, DISPATCH, PAUSE }
@@ -61,7 +68,7 @@ public final class Coordinator {
     private long nextSay = NONE;
     private long nextRoundFirstReport = NONE;
 
-    public Coordinator(ChannelConfig config, TeamKey key, String teamName, CoordinationProcedure procedure) {
+    public CoordinatorRounds(ChannelConfig config, TeamKey key, String teamName, CoordinationProcedure procedure) {
         if (procedure == null) throw new IllegalArgumentException("coordination procedure is null");
         this.config = config;
         this.codec = new TeamMessageCodec(key, config);

@@ -1,5 +1,11 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
+import phalanx.comm.team.ActionId;
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ChannelConfig;
+import phalanx.comm.team.TeamKey;
+import phalanx.comm.team.TeamMessageCodec;
+import phalanx.comm.team.TeamMessage;
 import org.junit.jupiter.api.Test;
 import phalanx.comm.perception.Hear;
 import phalanx.comm.perception.PlayMode;
@@ -13,9 +19,9 @@ import java.util.function.Supplier;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-class FieldPlayerTest {
-    static final TeamKey KEY = CoordinatorTest.KEY;
-    static final String TEAM = CoordinatorTest.TEAM;
+class FieldPlayerRoundsTest {
+    static final TeamKey KEY = CoordinatorRoundsTest.KEY;
+    static final String TEAM = CoordinatorRoundsTest.TEAM;
     final TeamMessageCodec ours = new TeamMessageCodec(KEY, ChannelConfig.DEFAULT);
     final List<Long> asked = new ArrayList<>();
 
@@ -27,7 +33,7 @@ class FieldPlayerTest {
     }
 
     /** Steps the player through [from, to], hearing {@code script.get(cycle)}; returns what it said, by cycle. */
-    Map<Long, String> run(FieldPlayer p, long from, long to, Map<Long, List<Hear>> script, List<ChannelEvent> events) {
+    Map<Long, String> run(FieldPlayerRounds p, long from, long to, Map<Long, List<Hear>> script, List<ChannelEvent> events) {
         Map<Long, String> said = new TreeMap<>();
         for (long c = from; c <= to; c++) {
             ChannelOutput out = p.step(c, PlayMode.PLAY_ON, script.getOrDefault(c, List.of()),
@@ -44,18 +50,18 @@ class FieldPlayerTest {
 
     @Test
     void announcesItselfInItsLabelledSlotUntilTheCoordinatorSpeaks() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 4, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, KEY, TEAM);
         List<ChannelEvent> ev = new ArrayList<>();
         Map<Long, String> said = run(p, 0, 50, Map.of(), ev);
         assertEquals(List.of(6L, 28L, 50L), List.copyOf(said.keySet())); // label 4 = slot 3, every 11 slots
         assertEquals(new TeamMessage.Init(4), ours.decode(said.get(6L), 8).message());
-        assertEquals(FieldPlayer.Mode.AUTONOMOUS, p.mode());
+        assertEquals(FieldPlayerRounds.Mode.AUTONOMOUS, p.mode());
         assertTrue(asked.isEmpty());
     }
 
     @Test
     void reportsInItsSlotAfterStartThenTakesItsActionAndKnowsTheNextRound() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 4, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, KEY, TEAM);
         List<ChannelEvent> ev = new ArrayList<>();
         // "s" said at 22, heard at 24: reports from 24 on, player 4 in the third slot, at 28
         Map<Long, String> said = run(p, 0, 40, Map.of(24L, List.of(fromCoordinator(new TeamMessage.Start(1), 22))), ev);
@@ -64,7 +70,7 @@ class FieldPlayerTest {
         var r = (TeamMessage.Location) ours.decode(said.get(28L), 30).message();
         assertEquals(1.5, r.x(), 0.021);
         assertEquals(List.of(new ChannelEvent.Coordinated(24)), ev);
-        assertEquals(FieldPlayer.Mode.COORDINATED, p.mode());
+        assertEquals(FieldPlayerRounds.Mode.COORDINATED, p.mode());
 
         // an action message said at 44 with 2 more to come: player 4's action is in it
         Action mine = Action.walkTo(4, -8.0, 2.0, 90);
@@ -82,7 +88,7 @@ class FieldPlayerTest {
 
     @Test
     void endAlsoSchedulesTheNextRound() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 2, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 2, KEY, TEAM);
         List<ChannelEvent> ev = new ArrayList<>();
         Map<Long, String> said = run(p, 30, 80, Map.of(46L, List.of(fromCoordinator(new TeamMessage.End(1), 44))), ev);
         assertEquals(List.of(66L), List.copyOf(said.keySet())); // 44 + 1 slot + 10 slots, first report slot
@@ -90,7 +96,7 @@ class FieldPlayerTest {
 
     @Test
     void ignoresReplayedOtherTeamsAndForgedActions() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 4, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, KEY, TEAM);
         List<ChannelEvent> ev = new ArrayList<>();
         TeamMessage.Actions a = new TeamMessage.Actions(0, List.of(Action.of(4, ActionId.STAND_UP)));
         TeamMessageCodec guess = new TeamMessageCodec(TeamKey.fromSecret("someone-elses-key-000"), ChannelConfig.DEFAULT);
@@ -108,7 +114,7 @@ class FieldPlayerTest {
 
     @Test
     void fallsBackToItsOwnBeliefsWhenTheCoordinatorGoesQuiet() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 4, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, KEY, TEAM);
         List<ChannelEvent> ev = new ArrayList<>();
         TeamMessage.Actions a = new TeamMessage.Actions(0, List.of(Action.of(4, ActionId.ON_BALL)));
         Map<Long, String> said = run(p, 40, 200, Map.of(46L, List.of(fromCoordinator(a, 44))), ev);
@@ -116,7 +122,7 @@ class FieldPlayerTest {
         assertEquals(ChannelEvent.CoordinatorSilent.class, ev.get(ev.size() - 1).getClass());
         assertEquals(147, ev.get(ev.size() - 1).cycle());
         assertNull(p.currentAction());
-        assertEquals(FieldPlayer.Mode.AUTONOMOUS, p.mode());
+        assertEquals(FieldPlayerRounds.Mode.AUTONOMOUS, p.mode());
         // its report at 44 + 2 + 20 + 4 = 70; after the fallback it announces itself in its slots again
         assertEquals(70L, said.keySet().iterator().next());
         List<Long> after = said.keySet().stream().filter(c -> c > 147).toList();
@@ -126,7 +132,7 @@ class FieldPlayerTest {
 
     @Test
     void staysQuietWhileItHearsARoundGoingOn() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 4, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, KEY, TEAM);
         List<ChannelEvent> ev = new ArrayList<>();
         // other players' reports every slot: a round it has not been told about
         Map<Long, List<Hear>> script = new java.util.HashMap<>();
@@ -137,18 +143,18 @@ class FieldPlayerTest {
 
     @Test
     void anUnsendableReportGoesOutAsUnaware() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 3, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 3, KEY, TEAM);
         p.step(24, PlayMode.PLAY_ON, List.of(fromCoordinator(new TeamMessage.Start(1), 22)), null);
         p.step(25, PlayMode.PLAY_ON, List.of(), null);
         ChannelOutput out = p.step(26, PlayMode.PLAY_ON, List.of(), () -> new TeamMessage.Location(3, Double.NaN, 0, 0));
         assertEquals(new TeamMessage.Unaware(3, false), ours.decode(out.say(), 28).message());
-        assertThrows(IllegalArgumentException.class, () -> new FieldPlayer(ChannelConfig.DEFAULT, 1, KEY, TEAM));
-        assertThrows(IllegalArgumentException.class, () -> new FieldPlayer(ChannelConfig.DEFAULT, 12, KEY, TEAM));
+        assertThrows(IllegalArgumentException.class, () -> new FieldPlayerRounds(ChannelConfig.DEFAULT, 1, KEY, TEAM));
+        assertThrows(IllegalArgumentException.class, () -> new FieldPlayerRounds(ChannelConfig.DEFAULT, 12, KEY, TEAM));
     }
 
     @Test
     void aPlayModeChangeVoidsTheSchedule() {
-        FieldPlayer p = new FieldPlayer(ChannelConfig.DEFAULT, 5, KEY, TEAM);
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 5, KEY, TEAM);
         p.step(24, PlayMode.PLAY_ON, List.of(fromCoordinator(new TeamMessage.Start(1), 22)), null);
         p.step(25, PlayMode.PLAY_ON, List.of(), null);
         // player 5's slot would be 22 + 2 + 3 x 2 = 30, but the play mode changes at 26 and the

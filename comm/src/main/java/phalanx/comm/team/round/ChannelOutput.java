@@ -1,4 +1,4 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
 import java.util.List;
 

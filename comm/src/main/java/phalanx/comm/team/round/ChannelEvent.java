@@ -1,32 +1,33 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
+import phalanx.comm.team.Action;
 import java.util.List;
 
 /** What happened on the team channel in one step, for the agent and the logs (one line each). */
 public sealed interface ChannelEvent {
     long cycle();
 
-    /** Coordinator: a field player announced itself, or came back after being inactive. */
+    /** CoordinatorRounds: a field player announced itself, or came back after being inactive. */
     record PlayerJoined(int unum, long cycle) implements ChannelEvent {
     }
 
-    /** Coordinator: a field player missed its reports too many rounds in a row. */
+    /** CoordinatorRounds: a field player missed its reports too many rounds in a row. */
     record PlayerInactive(int unum, long cycle) implements ChannelEvent {
     }
 
-    /** Coordinator: a round began (its start message was said, or its first report slot came). */
+    /** CoordinatorRounds: a round began (its start message was said, or its first report slot came). */
     record RoundStarted(int round, long cycle) implements ChannelEvent {
     }
 
-    /** Coordinator: the report phase closed, with these players' reports missing. */
+    /** CoordinatorRounds: the report phase closed, with these players' reports missing. */
     record ReportsComplete(int round, long cycle, int heard, List<Integer> missing) implements ChannelEvent {
     }
 
-    /** Coordinator: the last action message (or the end message) of the round was said. */
+    /** CoordinatorRounds: the last action message (or the end message) of the round was said. */
     record ActionsDispatched(int round, long cycle, int messages, int actions) implements ChannelEvent {
     }
 
-    /** Coordinator: the play mode changed mid-round; the round is dropped and a new one starts. */
+    /** CoordinatorRounds: the play mode changed mid-round; the round is dropped and a new one starts. */
     record RoundAborted(int round, long cycle) implements ChannelEvent {
     }
 

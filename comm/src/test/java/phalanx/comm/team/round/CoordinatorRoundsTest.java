@@ -1,5 +1,10 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ChannelConfig;
+import phalanx.comm.team.TeamKey;
+import phalanx.comm.team.TeamMessageCodec;
+import phalanx.comm.team.TeamMessage;
 import org.junit.jupiter.api.Test;
 import phalanx.comm.perception.Hear;
 import phalanx.comm.perception.PlayMode;
@@ -13,7 +18,7 @@ import java.util.function.Function;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-class CoordinatorTest {
+class CoordinatorRoundsTest {
     static final TeamKey KEY = TeamKey.fromSecret("coordinator-test-key-42");
     static final String TEAM = "Phalanx";
     final TeamMessageCodec ours = new TeamMessageCodec(KEY, ChannelConfig.DEFAULT);
@@ -28,7 +33,7 @@ class CoordinatorTest {
     }
 
     /** Drives the coordinator from {@code from} to {@code to} with what {@code hears} gives each cycle. */
-    static Map<Long, ChannelOutput> run(Coordinator c, long from, long to, Function<Long, List<Hear>> hears) {
+    static Map<Long, ChannelOutput> run(CoordinatorRounds c, long from, long to, Function<Long, List<Hear>> hears) {
         Map<Long, ChannelOutput> out = new HashMap<>();
         for (long cycle = from; cycle <= to; cycle++) out.put(cycle, c.step(cycle, PlayMode.PLAY_ON, hears.apply(cycle)));
         return out;
@@ -70,7 +75,7 @@ class CoordinatorTest {
 
     @Test
     void saysStartInItsOwnSlotOnceEveryPlayerHasAnnouncedItself() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
         Map<Long, ChannelOutput> out = run(c, 0, 22, this::inits);
         for (long cycle = 0; cycle < 22; cycle++) assertNull(out.get(cycle).say(), "quiet at " + cycle);
         // player 11's "i" (said at 20) arrives at 22: slot 11, label 1 again, the coordinator's
@@ -79,12 +84,12 @@ class CoordinatorTest {
         assertEquals(22, start.saidCycle());
         assertEquals(range(2, 11), events(out, ChannelEvent.PlayerJoined.class).stream().map(ChannelEvent.PlayerJoined::unum).toList());
         assertEquals(List.of(new ChannelEvent.RoundStarted(1, 22)), events(out, ChannelEvent.RoundStarted.class));
-        assertEquals(Coordinator.Phase.REPORTS, c.phase());
+        assertEquals(CoordinatorRounds.Phase.REPORTS, c.phase());
     }
 
     @Test
     void gathersTheReportsThenDispatchesPackedActionsThenPausesAndStartsTheNextRound() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
         run(c, 0, 22, this::inits);
         // reports: player u says at 24 + 2(u-2); player 11 at 42, heard at 44
         Map<Long, ChannelOutput> out = run(c, 23, 80, cy -> reports(cy, 24, range(2, 11)));
@@ -112,7 +117,7 @@ class CoordinatorTest {
 
     @Test
     void aMissingReportIsWaitedForOneCycleThenThePlayerTurnsInactiveAndBackActive() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
         run(c, 0, 22, this::inits);
         List<Integer> without11 = range(2, 10);
         Map<Long, ChannelOutput> r1 = run(c, 23, 75, cy -> reports(cy, 24, without11));
@@ -142,7 +147,7 @@ class CoordinatorTest {
 
     @Test
     void replayedForeignAndSpoofedReportsDoNotCount() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
         run(c, 0, 22, this::inits);
         TeamMessageCodec guess = new TeamMessageCodec(TeamKey.fromSecret("not-the-team-key-at-all"), ChannelConfig.DEFAULT);
         Map<Long, ChannelOutput> out = run(c, 23, 46, cy -> {
@@ -166,7 +171,7 @@ class CoordinatorTest {
 
     @Test
     void aReplayHeardFourCyclesLateIsRejected() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
         run(c, 0, 22, this::inits);
         // player 2's real report (said 24) is lost; an opponent replays it at 26 and we hear it at 28
         Map<Long, ChannelOutput> out = run(c, 23, 46, cy -> {
@@ -180,7 +185,7 @@ class CoordinatorTest {
 
     @Test
     void aPlayModeChangeDropsTheRoundAndStartsANewOneAtOnce() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
         run(c, 0, 22, this::inits);
         run(c, 23, 30, cy -> reports(cy, 24, range(2, 11)));
         ChannelOutput out = c.step(31, PlayMode.KICK_IN_LEFT, List.of());
@@ -190,7 +195,7 @@ class CoordinatorTest {
 
     @Test
     void withoutAllInitsTheFirstRoundStartsAfterTheTimeout() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, walkHome);
         Map<Long, ChannelOutput> out = run(c, 0, 120, cy -> cy <= 10 ? inits(cy) : List.of());
         // timeout 100 cycles; the coordinator's slots are every 22 cycles: 0, 22, ..., 110
         List<Long> says = out.keySet().stream().filter(k -> out.get(k).say() != null).sorted().toList();
@@ -200,7 +205,7 @@ class CoordinatorTest {
 
     @Test
     void aFailingProcedureClosesTheRoundWithEnd() {
-        Coordinator c = new Coordinator(ChannelConfig.DEFAULT, KEY, TEAM, r -> {
+        CoordinatorRounds c = new CoordinatorRounds(ChannelConfig.DEFAULT, KEY, TEAM, r -> {
             throw new IllegalStateException("no formation for this");
         });
         run(c, 0, 22, this::inits);

@@ -1,5 +1,6 @@
-package phalanx.comm.team;
+package phalanx.comm.team.round;
 
+import phalanx.comm.team.TeamMessage;
 import java.util.Map;
 import java.util.Set;
 
