@@ -13,17 +13,12 @@ import phalanx.comm.team.ChannelConfig;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.wire.ServerConnection;
 import phalanx.comm.wire.WireException;
-import phalanx.coordination.CoordinationConfig;
+import phalanx.coordination.support.DynamicProgrammingSupportMapper;
 import phalanx.coordination.Coordinator;
-import phalanx.localization.LocalizationConfig;
 import phalanx.localization.belief.BeliefStore;
-import phalanx.model.robot.NaoModel;
-import phalanx.model.field.FieldSpec;
-import phalanx.motion.MotionConfig;
 import phalanx.motion.MotionFileException;
 import phalanx.motion.MotionLibrary;
 import phalanx.motion.control.MotionController;
-import phalanx.motion.walk.WalkConfig;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -90,33 +85,34 @@ public final class Player {
 
     /** Everything the player is made of; a bad motion file or RoboViz address fails here, at start. */
     static PlayerParts parts(PlayerOptions o) throws MotionFileException, IOException {
-        FieldSpec field = FieldSpec.forPlayers(o.players());
+        PlayerConfig config = PlayerConfig.of(o);
         if (!Files.isDirectory(o.motions())) {
             throw new IOException("no motion folder at " + o.motions().toAbsolutePath() + " (use --motions DIR)");
         }
         MotionLibrary library = MotionLibrary.load(o.motions(), o.robotType());
-        BeliefStore beliefs = new BeliefStore(field, LocalizationConfig.DEFAULT, NaoModel.ofType(o.robotType()), o.team(), null, o.unum());
+        BeliefStore beliefs = new BeliefStore(config.field(), config.localization(), config.body(), o.team(), null, o.unum());
         RoboViz draw = o.roboviz() == null ? RoboViz.OFF : RoboViz.to(o.roboviz());
-        ChannelConfig channel = ChannelConfig.DEFAULT.withPlayers(o.players());
         TeamKey key = teamKey(o.team());
-        Body body = new Body(new MotionController(library, MotionConfig.DEFAULT), WalkConfig.forType(o.robotType()), o.robotType());
-        return new PlayerParts(beliefs, body, field, draw, (unum, self) -> {
-            PlayerParts.Role role = role(o, field, beliefs, channel, key, unum, self);
+        Body body = new Body(new MotionController(library, config.motion()), config.walk(), config.motion(), o.robotType());
+        return new PlayerParts(config, beliefs, body, draw, (unum, self) -> {
+            PlayerParts.Role role = role(o, config, beliefs, key, unum, self);
             // thesis 6.3's "empty" player: on the team channel as usual, but no motion and no head tracking
             return o.still() ? new PlayerParts.Role(role.channel(), (s, c) -> Decision.of(Move.STAND, HeadTarget.STRAIGHT)) : role;
         });
     }
 
-    private static PlayerParts.Role role(PlayerOptions o, FieldSpec field, BeliefStore beliefs, ChannelConfig channel,
-                                         TeamKey key, int unum, PlayerParts self) {
+    private static PlayerParts.Role role(PlayerOptions o, PlayerConfig config, BeliefStore beliefs, TeamKey key,
+                                         int unum, PlayerParts self) {
+        ChannelConfig channel = config.channel();
         if (unum == channel.coordinator()) {
-            GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(config(o)));
-            RoundPlanner procedure = new RoundPlanner(new Coordinator(), field, unum, beliefs::belief,
+            GoalkeeperBrain keeper = new GoalkeeperBrain(new GoalkeeperBehaviour(config.agent()));
+            Coordinator coordinator = new Coordinator(config.coordination(), new DynamicProgrammingSupportMapper());
+            RoundPlanner procedure = new RoundPlanner(coordinator, config.field(), unum, beliefs::belief,
                     self::playMode, keeper::hasBall);
             return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
         }
         return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum),
-                new FieldBrain(new FieldPlayerBehaviour(config(o)), unum, o.players(), CoordinationConfig.THESIS));
+                new FieldBrain(new FieldPlayerBehaviour(config.agent()), unum, o.players(), config.coordination()));
     }
 
     /**
@@ -132,11 +128,6 @@ public final class Player {
         }
     }
 
-    /** The robot type's config with the command line's choices applied. */
-    static AgentConfig config(PlayerOptions o) {
-        AgentConfig c = AgentConfig.forRobotType(o.robotType());
-        return c.withKick(c.kick().withDribbleWithin(o.dribbleWithin()));
-    }
 
     private static boolean openLog(PlayerOptions o) {
         try {

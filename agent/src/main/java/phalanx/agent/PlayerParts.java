@@ -13,7 +13,7 @@ import phalanx.comm.perception.PlayMode;
 import java.util.function.BiFunction;
 
 /**
- * What one player is made of: its belief store, motion controller, field and debug drawer, and
+ * What one player is made of: its config, belief store, motion controller, field and debug drawer, and
  * its role (team channel end and brain), which depends on the uniform number and is made once the
  * number is known (the server may choose it).
  */
@@ -21,27 +21,28 @@ public final class PlayerParts {
     /** The role-dependent parts: the goalkeeper coordinates, the others are coordinated. */
     public record Role(TeamChannel channel, Brain brain) {}
 
+    private final PlayerConfig config;
     private final BeliefStore beliefs;
     private final Body body;
-    private final FieldSpec field;
     private final RoboViz draw;
     private final BiFunction<Integer, PlayerParts, Role> roleFactory;
     private Role role;
     private int roleUnum;
     private PlayMode playMode = PlayMode.BEFORE_KICK_OFF;
 
-    public PlayerParts(BeliefStore beliefs, Body body, FieldSpec field, RoboViz draw,
+    public PlayerParts(PlayerConfig config, BeliefStore beliefs, Body body, RoboViz draw,
                        BiFunction<Integer, PlayerParts, Role> roleFactory) {
+        this.config = config;
         this.beliefs = beliefs;
         this.body = body;
-        this.field = field;
         this.draw = draw;
         this.roleFactory = roleFactory;
     }
 
     public BeliefStore beliefs() { return beliefs; }
     public Body body() { return body; }
-    public FieldSpec field() { return field; }
+    public PlayerConfig config() { return config; }
+    public FieldSpec field() { return config.field(); }
     public RoboViz draw() { return draw; }
 
     /** The play mode of the latest message (the think loop keeps it current). */

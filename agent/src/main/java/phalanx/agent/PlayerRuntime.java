@@ -11,9 +11,9 @@ import phalanx.comm.perception.Perception;
 import phalanx.comm.perception.PlayMode;
 import phalanx.comm.sexp.MalformedMessageException;
 import phalanx.comm.sexp.PerceptionParser;
-import phalanx.coordination.CoordinationConfig;
 import phalanx.localization.belief.WorldBelief;
 import phalanx.model.field.Pose2;
+import phalanx.motion.control.HeadServo;
 import phalanx.motion.control.JointVelocities;
 
 import java.util.logging.Logger;
@@ -25,8 +25,6 @@ import java.util.logging.Logger;
  */
 public final class PlayerRuntime {
     private static final Logger LOG = Logger.getLogger(PlayerRuntime.class.getName());
-    /** Head P-controller gain, 1/s: 8/s x 20 ms closes 16 % of the error a cycle, stable with 1 cycle of latency. */
-    private static final double HEAD_GAIN = 8.0;
 
     private final PlayerOptions options;
     private final PlayerParts parts;
@@ -43,7 +41,7 @@ public final class PlayerRuntime {
     public PlayerRuntime(PlayerOptions options, PlayerParts parts) {
         this.options = options;
         this.parts = parts;
-        this.beams = new BeamPolicy(parts.field(), CoordinationConfig.THESIS);
+        this.beams = new BeamPolicy(parts.field(), parts.config().coordination());
     }
 
     /** The reply to one perceptor message (the payload of one frame), ending in (syn). */
@@ -111,7 +109,7 @@ public final class PlayerRuntime {
     }
 
     /**
-     * Appends the body's commands with the head following the decision's target by a P-controller;
+     * Appends the body's commands with the head following the decision's target ({@link HeadServo});
      * motion files leave the head alone.
      */
     private void appendWithHead(JointVelocities v, Perception p, Decision d) {
@@ -119,12 +117,7 @@ public final class PlayerRuntime {
             v.appendTo(out);
             return;
         }
-        double yaw = HEAD_GAIN * Math.toRadians(d.head().yawDeg() - p.joints().degrees(Joint.HJ1));
-        double pitch = HEAD_GAIN * Math.toRadians(d.head().pitchDeg() - p.joints().degrees(Joint.HJ2));
-        v.appendTo(out, clamp(yaw), clamp(pitch));
-    }
-
-    private static double clamp(double radPerSecond) {
-        return Math.max(-6.0, Math.min(6.0, radPerSecond));
+        v.appendTo(out, HeadServo.velocity(d.head().yawDeg(), p.joints().degrees(Joint.HJ1)),
+                HeadServo.velocity(d.head().pitchDeg(), p.joints().degrees(Joint.HJ2)));
     }
 }

@@ -13,7 +13,7 @@ class PlayerOptionsTest {
         assertEquals(3100, d.port());
         assertEquals(11, d.players());
         assertEquals(0, d.dribbleWithin(), "the thesis: always kick");
-        assertEquals(100.0, Player.config(PlayerOptions.parse("--dribble-within", "100")).kick().dribbleWithin());
+        assertEquals(100.0, PlayerConfig.of(PlayerOptions.parse("--dribble-within", "100")).agent().kick().dribbleWithin());
         PlayerOptions o = PlayerOptions.parse("--host", "localhost", "--port", "3300", "--team", "Kouretes",
                 "--unum", "7", "--players", "9", "--type", "4", "--log-dir", "/tmp/x");
         assertEquals(3300, o.port());

@@ -19,14 +19,16 @@ import phalanx.motion.walk.WalkVelocity;
 public final class Body {
     private final MotionController keyframes;
     private final WalkConfig walkConfig;
+    private final MotionConfig motionConfig;
     private final int robotType;
     private WalkController walk;
     private boolean keyframeUsed;
     private Odometry odometry = Odometry.NONE;
 
-    public Body(MotionController keyframes, WalkConfig walkConfig, int robotType) {
+    public Body(MotionController keyframes, WalkConfig walkConfig, MotionConfig motionConfig, int robotType) {
         this.keyframes = keyframes;
         this.walkConfig = walkConfig;
+        this.motionConfig = motionConfig;
         this.robotType = robotType;
         this.walk = newWalk();
     }
@@ -76,6 +78,6 @@ public final class Body {
     }
 
     private WalkController newWalk() {
-        return new WalkController(walkConfig, robotType, MotionConfig.DEFAULT);
+        return new WalkController(walkConfig, robotType, motionConfig);
     }
 }

@@ -1,7 +1,6 @@
 package phalanx.agent.action;
 
 import phalanx.agent.AgentConfig;
-import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
@@ -14,18 +13,15 @@ import phalanx.model.field.Vector2;
  * fresh and confident": the goal's direction then follows from the pose (and stays right after
  * the head has turned away).
  */
-public final class FindOpponentGoal implements Action {
-    private final AgentConfig config;
-    private final Scan scan;
+public final class FindOpponentGoal extends SearchAction {
 
-    public FindOpponentGoal(AgentConfig config) {
-        this.config = config;
-        this.scan = new Scan(config);
-    }
+    public FindOpponentGoal(AgentConfig config) { super(config, new Scan(config)); }
 
     @Override
-    public Decision decide(Situation s) {
-        if (!done(s)) return Decision.of(Move.STAND, scan.head(s));
+    protected Move searching(Situation s) { return Move.STAND; }
+
+    @Override
+    protected Decision found(Situation s) {
         Vector2 rel = Facts.relative(s, config, s.field().opponentGoal());
         return Decision.of(Move.STAND, TrackObject.toward(rel, 0.4, s, config));
     }

@@ -1,7 +1,6 @@
 package phalanx.agent.action;
 
 import phalanx.agent.AgentConfig;
-import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Move;
 import phalanx.agent.decide.Situation;
@@ -11,20 +10,15 @@ import phalanx.localization.belief.WorldBelief;
  * 4.6.1 Look For Ball: turn the body while scanning until the ball is in view. It turns toward the
  * side where the ball was last seen (left when it never was).
  */
-public final class LookForBall implements Action {
-    private final AgentConfig config;
-    private final Scan scan;
+public final class LookForBall extends SearchAction {
 
-    public LookForBall(AgentConfig config) {
-        this.config = config;
-        this.scan = new Scan(config);
-    }
+    public LookForBall(AgentConfig config) { super(config, new Scan(config)); }
 
     @Override
-    public Decision decide(Situation s) {
-        if (done(s)) return Decision.of(Move.STAND, TrackObject.ball(config).head(s));
-        return Decision.of(new Move.Turn(lastSeenLeft(s), config.walk().gainMax()), scan.head(s));
-    }
+    protected Move searching(Situation s) { return new Move.Turn(lastSeenLeft(s), config.walk().gainMax()); }
+
+    @Override
+    protected Decision found(Situation s) { return Decision.of(Move.STAND, TrackObject.ball(config).head(s)); }
 
     @Override
     public boolean done(Situation s) { return Facts.ballInView(s, config) != null; }

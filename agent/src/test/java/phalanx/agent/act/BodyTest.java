@@ -29,7 +29,7 @@ class BodyTest {
 
     @Test
     void stepBackWalksBackwardSlowlyAndNeedsNoKeyframeFile() {
-        Body body = new Body(new MotionController(MotionLibrary.of(), MotionConfig.DEFAULT), WalkConfig.DEFAULT, 0);
+        Body body = new Body(new MotionController(MotionLibrary.of(), MotionConfig.DEFAULT), WalkConfig.DEFAULT, MotionConfig.DEFAULT, 0);
         double forward = 0;
         for (int i = 0; i < 100; i++) {
             body.step(standing(i * 0.02), new Move.StepBack());
