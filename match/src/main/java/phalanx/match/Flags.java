@@ -2,10 +2,39 @@ package phalanx.match;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 
 /** Flag values the benches and the match tools read the same way; each error names the flag. */
 public final class Flags {
     private Flags() { }
+
+    /**
+     * A command line as its flags in order, each {@code {flag, value}}: {@code --help} or {@code -h}
+     * throws the usage, a flag named in {@code switches} stands alone (value "true"), any other needs
+     * a value. What each flag means is the caller's; an unknown one goes to {@link #unknown}.
+     */
+    public static List<String[]> pairs(String[] args, String usage, Set<String> switches) {
+        List<String[]> out = new ArrayList<>();
+        for (int i = 0; i < args.length; i++) {
+            String flag = args[i];
+            if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(usage);
+            if (switches.contains(flag)) {
+                out.add(new String[] {flag, "true"});
+                continue;
+            }
+            if (i + 1 >= args.length) throw new IllegalArgumentException(flag + " needs a value\n" + usage);
+            out.add(new String[] {flag, args[++i]});
+        }
+        return out;
+    }
+
+    /** The error for a flag the tool does not know. */
+    public static IllegalArgumentException unknown(String flag, String usage) {
+        return new IllegalArgumentException("unknown flag '" + flag + "'\n" + usage);
+    }
+
+    /** A TCP port, 1-65535. */
+    public static int port(String flag, String v) { return (int) number(flag, v, 1, 65535, true); }
 
     /** A number in [min, max]; {@code whole} wants an integer. */
     public static double number(String flag, String v, double min, double max, boolean whole) {

@@ -4,6 +4,7 @@ import phalanx.match.Flags;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 
 /**
  * Command line of scripts/motion-bench. Every bad flag gets a message naming it.
@@ -43,16 +44,13 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
         List<String> kicks = List.of("kick", "strong_kick");
         double ballAhead = 0.17, ballSide = 0.055, ballJitter = 0, diveOffset = 0.6, shotSeconds = 0.8;
         List<String> lying = List.of("front", "back", "side", "oblique");
-        for (int i = 0; i < args.length; i++) {
-            String flag = args[i];
-            if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(USAGE);
-            if (flag.equals("--trace")) { trace = true; continue; }
-            if (i + 1 >= args.length) throw new IllegalArgumentException(flag + " needs a value\n" + USAGE);
-            String v = args[++i];
+        for (String[] p : Flags.pairs(args, USAGE, Set.of("--trace"))) {
+            String flag = p[0], v = p[1];
             switch (flag) {
                 case "--host" -> host = v;
-                case "--port" -> port = port(flag, v);
-                case "--monitor-port" -> monitorPort = port(flag, v);
+                case "--trace" -> trace = true;
+                case "--port" -> port = Flags.port(flag, v);
+                case "--monitor-port" -> monitorPort = Flags.port(flag, v);
                 case "--trials" -> trials = (int) Flags.number(flag, v, 1, 100, true);
                 case "--walk-seconds" -> walk = Flags.number(flag, v, 1, 600, false);
                 case "--turn-seconds" -> turn = Flags.number(flag, v, 1, 600, false);
@@ -83,7 +81,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 case "--dive-offset" -> diveOffset = Flags.number(flag, v, 0, 2, false);
                 case "--shot-seconds" -> shotSeconds = Flags.number(flag, v, 0.1, 3, false);
                 case "--type" -> types = Flags.types(flag, v);
-                default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
+                default -> throw Flags.unknown(flag, USAGE);
             }
         }
         return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace,
@@ -91,8 +89,5 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
     }
 
     public boolean runs(String what) { return only == null || only.equals(what); }
-
-    private static int port(String flag, String v) { return (int) Flags.number(flag, v, 1, 65535, true); }
-
 
 }

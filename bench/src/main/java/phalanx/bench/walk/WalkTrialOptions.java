@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * Command line of scripts/walk-bench. Every bad flag gets a message naming it.
@@ -44,15 +45,12 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
         List<Integer> types = List.of(0, 2, 4);
         List<String> scenarios = DEFAULT_SCENARIOS;
         Map<String, Double> set = new LinkedHashMap<>(), search = new LinkedHashMap<>();
-        for (int i = 0; i < args.length; i++) {
-            String flag = args[i];
-            if (flag.equals("--help") || flag.equals("-h")) throw new IllegalArgumentException(USAGE);
-            if (i + 1 >= args.length) throw new IllegalArgumentException(flag + " needs a value\n" + USAGE);
-            String v = args[++i];
+        for (String[] p : Flags.pairs(args, USAGE, Set.of())) {
+            String flag = p[0], v = p[1];
             switch (flag) {
                 case "--host" -> host = v;
-                case "--port" -> port = (int) Flags.number(flag, v, 1, 65535, true);
-                case "--monitor-port" -> monitorPort = (int) Flags.number(flag, v, 1, 65535, true);
+                case "--port" -> port = Flags.port(flag, v);
+                case "--monitor-port" -> monitorPort = Flags.port(flag, v);
                 case "--rounds" -> rounds = (int) Flags.number(flag, v, 1, 20, true);
                 case "--starts" -> starts = (int) Flags.number(flag, v, 1, 10, true);
                 case "--search-seconds" -> searchSeconds = Flags.number(flag, v, 2, 600, false);
@@ -71,7 +69,7 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
                 }
                 case "--set" -> pairs(flag, v, '=', set, false);
                 case "--search" -> pairs(flag, v, ':', search, true);
-                default -> throw new IllegalArgumentException("unknown flag '" + flag + "'\n" + USAGE);
+                default -> throw Flags.unknown(flag, USAGE);
             }
         }
         return new WalkTrialOptions(host, port, monitorPort, types, scenarios, Map.copyOf(set), java.util.Collections.unmodifiableMap(search),
