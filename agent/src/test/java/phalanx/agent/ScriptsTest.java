@@ -13,7 +13,10 @@ import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-/** start.sh and stop.sh refuse bad input with a clear message, before building or starting anything. */
+/**
+ * start.sh and stop.sh refuse bad input with a clear message, before building or starting anything;
+ * scripts/phalanx stats player reads a log folder.
+ */
 class ScriptsTest {
 
     private record Run(int status, String output) {}
@@ -62,8 +65,8 @@ class ScriptsTest {
     }
 
     /**
-     * player-stats on a log folder written by hand: think times (wall, and CPU where the log has it:
-     * player 2's older line has none), GC pauses, falls and the time lying.
+     * scripts/phalanx stats player on a log folder written by hand: think times (wall, and CPU where the
+     * log has it: player 2's older line has none), GC pauses, falls and the time lying.
      */
     @Test
     void playerStatsCountsThinkTimesGcPausesAndFalls() throws Exception {
@@ -82,7 +85,7 @@ class ScriptsTest {
         Files.writeString(dir.resolve("gc-1.log"), "[1.0s][info] GC(0) Pause Young (Allocation Failure) 11M->2M(30M) 0.629ms\n");
         Files.writeString(dir.resolve("gc-2.log"), "[1.0s][info] GC(0) Pause Young (Allocation Failure) 11M->2M(30M) 7.5ms\n"
                 + "[2.0s][info] GC(1) Pause Young (Allocation Failure) 11M->2M(30M) 1.0ms\n");
-        Run r = run("bash", "scripts/player-stats", dir.toString());
+        Run r = run("bash", "scripts/phalanx", "stats", "player", dir.toString());
         assertEquals(0, r.status(), r.output());
         String last = r.output().strip().lines().reduce((a, b) -> b).orElse("");
         assertEquals("think_p50_us_max=120 think_p99_us_max=1500 think_max_us=30000 cycles=6000 over_20ms=3 over_20ms_share=0.0005"
@@ -90,7 +93,7 @@ class ScriptsTest {
         assertTrue(r.output().lines().anyMatch(l -> l.matches("2 .* - +- +-")), "player 2 logged no CPU time: " + r.output());
         // no player with CPU figures: NaN, not 0
         Files.writeString(dir.resolve("player-1.out"), "INFO: think_us p50=100 p99=900 max=2500 cycles=3000 over_20ms=0\n");
-        r = run("bash", "scripts/player-stats", dir.toString());
+        r = run("bash", "scripts/phalanx", "stats", "player", dir.toString());
         assertTrue(r.output().strip().endsWith("cpu_p50_us_max=NaN cpu_p99_us_max=NaN cpu_max_us=NaN"), r.output());
     }
 }

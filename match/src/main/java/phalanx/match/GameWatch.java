@@ -11,14 +11,14 @@ import java.io.PrintStream;
 import java.util.Locale;
 
 /**
- * scripts/game-watch: a text monitor for reviewing a game. It joins a running server's monitor port and
+ * scripts/phalanx watch: a text monitor for reviewing a game. It joins a running server's monitor port and
  * prints, every {@code --every} seconds of game time, the play mode, the score, the ball and every robot
  * (x, y; {@code _} after a robot lying down), one line each. Read-only: it sends nothing but full-state
  * requests. It ends when the server closes the connection.
  */
 public final class GameWatch {
     static final String USAGE = """
-            usage: scripts/game-watch [--host 127.0.0.1] --monitor-port M [--every 2] [--players 11]
+            usage: scripts/phalanx watch [--host 127.0.0.1] --monitor-port M [--every 2] [--players 11]
               prints one line per --every game seconds: time, play mode, score, ball, each robot's x,y
               (L1..L11, R1..R11; '_' after a robot whose torso is more than 60 degrees from upright)""";
 

@@ -12,18 +12,18 @@ import java.util.Set;
 import java.util.stream.Stream;
 
 /**
- * scripts/keeper-test: the goalkeeper test of thesis 6.3. An attacking team plays against our goal with
- * no field players of ours, in three conditions: no goalkeeper, a goalkeeper that only stands
+ * scripts/phalanx keeper-test: the goalkeeper test of thesis 6.3. An attacking team plays against our goal
+ * with no field players of ours, in three conditions: no goalkeeper, a goalkeeper that only stands
  * ({@code --behaviour still}), and our goalkeeper. Each condition is played {@code --games} times
- * (one half each by default) with scripts/match's runner; the report is Table 6.3: goals conceded per
- * half beside the thesis's figures.
+ * (one half each by default) with the runner of scripts/phalanx match; the report is Table 6.3: goals
+ * conceded per half beside the thesis's figures.
  */
 public final class KeeperTest {
     static final String USAGE = """
-            usage: scripts/keeper-test --attacker NAME='COMMAND' [--conditions none,still,keeper] [--games N]
-                                       [--restarts N] [--out DIR] [match options]
-                   scripts/keeper-test --report DIR
-              COMMAND as for scripts/match ({host} {port} {dir}): a team that attacks (FC Portugal; the UT Austin
+            usage: scripts/phalanx keeper-test --attacker NAME='COMMAND' [--conditions none,still,keeper] [--games N]
+                                               [--restarts N] [--out DIR] [match options]
+                   scripts/phalanx keeper-test --report DIR
+              COMMAND as for scripts/phalanx match ({host} {port} {dir}): a team that attacks (FC Portugal; the UT Austin
               Villa base code only plays its demo circle). Each condition is played N times (default 1),
               one half of 300 s unless --halves/--half-time say otherwise.
               --restarts N a game that stalled within its first game second (FC Portugal's sync start stalls the
@@ -70,7 +70,7 @@ public final class KeeperTest {
             if (a.get("halves", null) == null) args.addAll(List.of("--halves", "1"));
             args.add("--allow-empty");
             Args match = MatchOptions.parse(args.toArray(String[]::new), USAGE, "keeper-test", own, Set.of());
-            // Ctrl-C stops the game being played and everything it started (as scripts/tournament does).
+            // Ctrl-C stops the game being played and everything it started (as scripts/phalanx tournament does).
             final MatchRunner[] current = new MatchRunner[1];
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 synchronized (current) {
@@ -96,7 +96,7 @@ public final class KeeperTest {
             System.out.print(report(out));
         } catch (IllegalArgumentException | IllegalStateException e) {
             System.err.println(e.getMessage());
-            System.err.println("(scripts/keeper-test --help for the options)");
+            System.err.println("(scripts/phalanx keeper-test --help for the options)");
             System.exit(2);
         } catch (IOException e) {
             System.err.println("keeper-test: " + e.getMessage());

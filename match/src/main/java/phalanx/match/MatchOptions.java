@@ -5,7 +5,7 @@ import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.Set;
 
-/** The server and timing options shared by scripts/match and scripts/tournament. */
+/** The server and timing options shared by scripts/phalanx match, tournament and keeper-test. */
 final class MatchOptions {
     static final Set<String> VALUED = Set.of("agent-port", "monitor-port", "half-time", "halves", "players",
             "connect-timeout", "connect-quiet", "settle", "stall", "max-wall");

@@ -4,12 +4,12 @@ import java.nio.file.Path;
 import java.util.Set;
 
 /**
- * scripts/match: one match between two teams given as start commands, on a server of its own.
+ * scripts/phalanx match: one match between two teams given as start commands, on a server of its own.
  * Exit status 0 when the game reached GameOver, 1 when it did not (the JSON says why), 2 on a usage error.
  */
 public final class MatchReferee {
     static final String USAGE = """
-            usage: scripts/match --left NAME='COMMAND' --right NAME='COMMAND' [options]
+            usage: scripts/phalanx match --left NAME='COMMAND' --right NAME='COMMAND' [options]
               COMMAND starts a team; {host} {port} {dir} are replaced by 127.0.0.1, the agent port and a log
               folder for that team, e.g. --left "Phalanx=scripts/start.sh {host} {port} Phalanx --log-dir {dir}".
               --left starts first and so normally plays on the left.
@@ -33,7 +33,7 @@ public final class MatchReferee {
             runner = new MatchRunner(MatchOptions.config(a, left, right, dir, out), System.out);
         } catch (IllegalArgumentException | IllegalStateException e) {
             System.err.println(e.getMessage());
-            System.err.println("(scripts/match --help for the options)");
+            System.err.println("(scripts/phalanx match --help for the options)");
             System.exit(2);
             return;
         }

@@ -13,17 +13,17 @@ import java.util.Set;
 import java.util.stream.Stream;
 
 /**
- * scripts/tournament: plays a list of opponents N games each against one team ({@code --us}), or a
+ * scripts/phalanx tournament: plays a list of opponents N games each against one team ({@code --us}), or a
  * round robin among all teams, one match after the other (each on a fresh server, so a server that
  * died is simply replaced), then prints Tables 6.4 and 6.5 and writes the goal-difference plot.
  * {@code --report DIR} only rebuilds the tables from the result files already in DIR.
  */
 public final class Tournament {
     static final String USAGE = """
-            usage: scripts/tournament --team NAME='COMMAND' --team NAME='COMMAND' ... [--us NAME] [--games N]
-                                      [--round-robin] [--out DIR] [match options]
-                   scripts/tournament --report DIR [--us NAME]
-              COMMAND as for scripts/match ({host} {port} {dir}). Without --round-robin, --us (default: the
+            usage: scripts/phalanx tournament --team NAME='COMMAND' --team NAME='COMMAND' ... [--us NAME] [--games N]
+                                              [--round-robin] [--out DIR] [match options]
+                   scripts/phalanx tournament --report DIR [--us NAME]
+              COMMAND as for scripts/phalanx match ({host} {port} {dir}). Without --round-robin, --us (default: the
               first --team) plays every other team N times (default 1); the sides alternate.
               --out DIR    results (game-NN.json), match logs, tables.md, goal-difference.svg
                            (default /tmp/phalanx-tournaments/<time>)
@@ -80,7 +80,7 @@ public final class Tournament {
             System.exit(report(out, a.flag("round-robin") ? null : us, System.out));
         } catch (IllegalArgumentException | IllegalStateException e) {
             System.err.println(e.getMessage());
-            System.err.println("(scripts/tournament --help for the options)");
+            System.err.println("(scripts/phalanx tournament --help for the options)");
             System.exit(2);
         } catch (IOException e) {
             System.err.println("tournament: " + e.getMessage());

@@ -12,9 +12,10 @@ import java.util.Map;
 import static org.junit.jupiter.api.Assertions.*;
 
 /**
- * scripts/kick-search without a server: the committed strong kicks are generator 3's output for the
- * parameters `params` reads back from them (so a search can restart from a committed file), and a bad
- * score setting in the environment is refused by name. Needs python3; skips with a message without it.
+ * scripts/phalanx bench kick-search (scripts/lib/tools/kick-search) without a server: the committed
+ * strong kicks are generator 3's output for the parameters `params` reads back from them (so a search
+ * can restart from a committed file), and a bad score setting in the environment is refused by name.
+ * Needs python3; skips with a message without it.
  */
 class KickSearchScriptTest {
     private static Run run(Map<String, String> env, String... args) throws Exception {
@@ -24,11 +25,11 @@ class KickSearchScriptTest {
     @Test
     void theCommittedStrongKicksAreGeneratedFromTheirOwnParameters(@TempDir Path tmp) throws Exception {
         for (String file : new String[] {"strong_kick.xml", "type4/strong_kick.xml"}) {
-            Run params = run(Map.of(), "scripts/kick-search", "params", "motions/" + file);
+            Run params = run(Map.of(), "scripts/lib/tools/kick-search", "params", "motions/" + file);
             assertEquals(0, params.status(), params.err());
             Path json = tmp.resolve("p.json");
             Files.writeString(json, params.out());
-            Run gen = run(Map.of(), "scripts/kick-search", "gen", json.toString(), "regenerated");
+            Run gen = run(Map.of(), "scripts/lib/tools/kick-search", "gen", json.toString(), "regenerated");
             assertEquals(0, gen.status(), gen.err());
             Path dir = Files.createDirectories(tmp.resolve(file.replace('/', '_')));
             Files.writeString(dir.resolve("strong_kick.xml"), gen.out());
@@ -45,11 +46,11 @@ class KickSearchScriptTest {
 
     @Test
     void refusesAScoreSettingThatIsNoNumber() throws Exception {
-        Run r = run(Map.of("KICK_REEVAL", "often"), "scripts/kick-search", "params", "motions/strong_kick.xml");
+        Run r = run(Map.of("KICK_REEVAL", "often"), "scripts/lib/tools/kick-search", "params", "motions/strong_kick.xml");
         assertEquals(1, r.status());
         assertTrue(r.err().contains("KICK_REEVAL must be a whole number, got 'often'"), r.err());
         assertEquals("", r.out(), "nothing printed before the refusal");
-        r = run(Map.of("KICK_DIR_COST", "1,5"), "scripts/kick-search", "params", "motions/strong_kick.xml");
+        r = run(Map.of("KICK_DIR_COST", "1,5"), "scripts/lib/tools/kick-search", "params", "motions/strong_kick.xml");
         assertEquals(1, r.status());
         assertTrue(r.err().contains("KICK_DIR_COST must be a number, got '1,5'"), r.err());
     }

@@ -11,8 +11,9 @@ import java.nio.file.Path;
 import static org.junit.jupiter.api.Assertions.*;
 
 /**
- * scripts/mirror-motion (motions/README.md "Mirrors"): its mirror of dive_left.xml is dive_right.xml,
- * and bad input gets a clear message and status 1. Needs python3; skips with a message without it.
+ * scripts/phalanx mirror-motion (scripts/lib/tools/mirror-motion; motions/README.md "Mirrors"): its
+ * mirror of dive_left.xml is dive_right.xml, and bad input gets a clear message and status 1. Needs
+ * python3; skips with a message without it.
  */
 class MirrorMotionScriptTest {
     private static Run run(String... args) throws Exception {
@@ -21,7 +22,7 @@ class MirrorMotionScriptTest {
 
     @Test
     void mirrorsTheLeftDiveIntoTheRightOne(@TempDir Path tmp) throws Exception {
-        Run r = run("scripts/mirror-motion", "motions/dive_left.xml");
+        Run r = run("scripts/lib/tools/mirror-motion", "motions/dive_left.xml");
         assertEquals(0, r.status(), r.err());
         Files.writeString(tmp.resolve("dive_right.xml"), r.out());
         PhaseMotion mine = (PhaseMotion) MotionLibrary.load(tmp).get("dive_right");
@@ -36,16 +37,16 @@ class MirrorMotionScriptTest {
 
     @Test
     void refusesAMissingFileAndAFileThatIsNoPhaseMotion(@TempDir Path tmp) throws Exception {
-        Run r = run("scripts/mirror-motion", tmp.resolve("nope.xml").toString());
+        Run r = run("scripts/lib/tools/mirror-motion", tmp.resolve("nope.xml").toString());
         assertEquals(1, r.status());
         assertTrue(r.err().contains("cannot read") && r.err().contains("nope.xml"), r.err());
         Path text = tmp.resolve("turn.motion");
         Files.writeString(text, "#WEBOTS_MOTION,V1.0\nHeadYaw\n00:00:000,P1,0\n");
-        r = run("scripts/mirror-motion", text.toString());
+        r = run("scripts/lib/tools/mirror-motion", text.toString());
         assertEquals(1, r.status());
         assertTrue(r.err().contains("is not an XML phase motion"), r.err());
         assertEquals("", r.out(), "nothing half-written on stdout");
-        r = run("scripts/mirror-motion");
+        r = run("scripts/lib/tools/mirror-motion");
         assertEquals(1, r.status());
         assertTrue(r.err().contains("mirror-motion motions/kick.xml"), "usage: " + r.err());
     }
