@@ -8,6 +8,30 @@ import java.util.Set;
 public final class Flags {
     private Flags() { }
 
+    /** Where every tool finds the server unless told otherwise (rcssserver3d's own defaults). */
+    public static final String HOST = "127.0.0.1";
+    public static final int AGENT_PORT = 3100, MONITOR_PORT = 3200;
+    /** The server flags every tool that talks to rcssserver3d reads, with their defaults. */
+    public static final class Server {
+        public String host = HOST;
+        public int port = AGENT_PORT;
+        public int monitorPort = MONITOR_PORT;
+
+        /** Takes {@code --host}, {@code --port} or {@code --monitor-port}; false for any other flag. */
+        public boolean read(String flag, String v) {
+            switch (flag) {
+                case "--host" -> host = v;
+                case "--port" -> port = port(flag, v);
+                case "--monitor-port" -> monitorPort = port(flag, v);
+                default -> { return false; }
+            }
+            return true;
+        }
+    }
+
+    /** The server flags' part of a usage line. */
+    public static final String SERVER_USAGE = "[--host " + HOST + "] [--port " + AGENT_PORT + "] [--monitor-port " + MONITOR_PORT + "]";
+
     /**
      * A command line as its flags in order, each {@code {flag, value}}: {@code --help} or {@code -h}
      * throws the usage, a flag named in {@code switches} stands alone (value "true"), any other needs

@@ -28,14 +28,15 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                            List<String> kicks, double ballAhead, double ballSide, double ballJitter, double diveOffset, double shotSeconds,
                            double getupWalkSeconds, List<String> lying) {
 
-    public static final String USAGE = "usage: motion-bench [--host H] [--port 3100] [--monitor-port 3200] [--type 0,1,2]"
-            + " [--trials 3] [--walk-seconds 10] [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup|dive] [--trace]"
-            + " [--kicks kick,strong_kick] [--ball-ahead 0.17] [--ball-side 0.055] [--ball-jitter 0] [--dive-offset 0.6] [--shot-seconds 0.8]"
-            + " [--getup-walk 2] [--lying front,back,side,oblique]";
+    public static final String USAGE = """
+            usage: scripts/phalanx bench motion %s [--type 0,1,2] [--trials 3] [--walk-seconds 10] \
+            [--turn-seconds 5] [--motions motions] [--only walk|turn|kick|getup|dive] [--trace] [--kicks kick,strong_kick] \
+            [--ball-ahead 0.17] [--ball-side 0.055] [--ball-jitter 0] [--dive-offset 0.6] [--shot-seconds 0.8] \
+            [--getup-walk 2] [--lying front,back,side,oblique]""".formatted(Flags.SERVER_USAGE);
 
     public static BenchOptions parse(String... args) {
-        String host = "127.0.0.1";
-        int port = 3100, monitorPort = 3200, trials = 3;
+        Flags.Server server = new Flags.Server();
+        int trials = 3;
         double walk = 10, turn = 5, getupWalk = 2;
         List<Integer> types = List.of(0, 1, 2);
         Path motions = Path.of("motions");
@@ -46,11 +47,9 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
         List<String> lying = List.of("front", "back", "side", "oblique");
         for (String[] p : Flags.pairs(args, USAGE, Set.of("--trace"))) {
             String flag = p[0], v = p[1];
+            if (server.read(flag, v)) continue;
             switch (flag) {
-                case "--host" -> host = v;
                 case "--trace" -> trace = true;
-                case "--port" -> port = Flags.port(flag, v);
-                case "--monitor-port" -> monitorPort = Flags.port(flag, v);
                 case "--trials" -> trials = (int) Flags.number(flag, v, 1, 100, true);
                 case "--walk-seconds" -> walk = Flags.number(flag, v, 1, 600, false);
                 case "--turn-seconds" -> turn = Flags.number(flag, v, 1, 600, false);
@@ -84,7 +83,7 @@ public record BenchOptions(String host, int port, int monitorPort, List<Integer>
                 default -> throw Flags.unknown(flag, USAGE);
             }
         }
-        return new BenchOptions(host, port, monitorPort, types, trials, walk, turn, motions, only, trace,
+        return new BenchOptions(server.host, server.port, server.monitorPort, types, trials, walk, turn, motions, only, trace,
                 kicks, ballAhead, ballSide, ballJitter, diveOffset, shotSeconds, getupWalk, lying);
     }
 

@@ -32,14 +32,15 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
     public static final List<String> SCENARIOS = List.of("forward10", "forward60", "turn", "side", "mixed");
     /** What runs without --scenarios (mixed is asked for by name: a minute per start and type). */
     public static final List<String> DEFAULT_SCENARIOS = List.of("forward10", "forward60", "turn", "side");
-    public static final String USAGE = "usage: walk-bench [--host 127.0.0.1] [--port 3100] [--monitor-port 3200] [--type 0,2,4]"
-            + " [--scenarios forward10,forward60,turn,side,mixed] [--set field=value,...] [--search field:step,...]"
-            + " [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10] [--starts 1]"
-            + " [--seed 1] [--mixed-seconds 60]";
+    public static final String USAGE = """
+            usage: scripts/phalanx bench walk %s [--type 0,2,4] \
+            [--scenarios forward10,forward60,turn,side,mixed] [--set field=value,...] [--search field:step,...] \
+            [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10] [--starts 1] \
+            [--seed 1] [--mixed-seconds 60]""".formatted(Flags.SERVER_USAGE);
 
     public static WalkTrialOptions parse(String... args) {
-        String host = "127.0.0.1";
-        int port = 3100, monitorPort = 3200, rounds = 3, starts = 1;
+        Flags.Server server = new Flags.Server();
+        int rounds = 3, starts = 1;
         long seed = 1;
         double searchSeconds = 15, turnSeconds = 10, sideSeconds = 10, mixedSeconds = 60;
         List<Integer> types = List.of(0, 2, 4);
@@ -47,10 +48,8 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
         Map<String, Double> set = new LinkedHashMap<>(), search = new LinkedHashMap<>();
         for (String[] p : Flags.pairs(args, USAGE, Set.of())) {
             String flag = p[0], v = p[1];
+            if (server.read(flag, v)) continue;
             switch (flag) {
-                case "--host" -> host = v;
-                case "--port" -> port = Flags.port(flag, v);
-                case "--monitor-port" -> monitorPort = Flags.port(flag, v);
                 case "--rounds" -> rounds = (int) Flags.number(flag, v, 1, 20, true);
                 case "--starts" -> starts = (int) Flags.number(flag, v, 1, 10, true);
                 case "--search-seconds" -> searchSeconds = Flags.number(flag, v, 2, 600, false);
@@ -72,7 +71,7 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
                 default -> throw Flags.unknown(flag, USAGE);
             }
         }
-        return new WalkTrialOptions(host, port, monitorPort, types, scenarios, Map.copyOf(set), java.util.Collections.unmodifiableMap(search),
+        return new WalkTrialOptions(server.host, server.port, server.monitorPort, types, scenarios, Map.copyOf(set), java.util.Collections.unmodifiableMap(search),
                 rounds, searchSeconds, turnSeconds, sideSeconds, starts, seed, mixedSeconds);
     }
 

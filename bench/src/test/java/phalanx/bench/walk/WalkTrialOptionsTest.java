@@ -60,6 +60,6 @@ class WalkTrialOptionsTest {
         assertTrue(error("--seed", "-1").contains("--seed must be in"));
         assertTrue(error("--seed", "one").contains("--seed needs a whole number, got 'one'"));
         assertTrue(error("--mixed-seconds", "0").contains("--mixed-seconds must be in"));
-        assertTrue(error("--help").startsWith("usage: walk-bench"));
+        assertTrue(error("--help").startsWith("usage: scripts/phalanx bench walk"));
     }
 }
