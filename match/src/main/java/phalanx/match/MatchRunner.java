@@ -8,14 +8,19 @@ import phalanx.comm.wire.WireException;
 import phalanx.match.MatchResult.ServerInfo;
 import phalanx.match.MatchResult.TeamResult;
 
+import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.io.PrintStream;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Logger;
+import java.util.zip.GZIPOutputStream;
 
 /**
  * Runs one match: starts a server on its own ports, starts the two teams one after the other (the
@@ -167,19 +172,52 @@ public final class MatchRunner {
         return aborted.get() ? abortReason : "no monitor port " + cfg.server().monitorPort() + " after 30 s; see " + server.log();
     }
 
+    /** Follows the monitor stream and records it, one message a line, in monitor.log.gz (scripts/phalanx stats game). */
     private void readStream() {
+        Writer log = openMonitorLog();
         try {
             while (!finished.get()) {
                 String m = monitor.next();
                 lastMessageNanos = System.nanoTime();
                 follower.accept(m);
+                log = record(log, m);
             }
         } catch (IOException e) {
             if (!finished.get()) LOG.info("monitor stream ended: " + e.getMessage());
         } finally {
             streamEnded = true;
+            if (log != null) {
+                try { log.close(); } catch (IOException e) { LOG.warning("monitor log: " + e.getMessage()); }
+            }
         }
     }
+
+    private Writer openMonitorLog() {
+        Path p = monitorLog(cfg.dir());
+        try {
+            return new BufferedWriter(new OutputStreamWriter(new GZIPOutputStream(Files.newOutputStream(p)), StandardCharsets.ISO_8859_1));
+        } catch (IOException e) {
+            LOG.warning("cannot record the monitor stream in " + p + ": " + e.getMessage() + " (the match goes on)");
+            return null;
+        }
+    }
+
+    /** Writes one message; on a write error the recording stops and the match goes on. */
+    private static Writer record(Writer log, String message) {
+        if (log == null) return null;
+        try {
+            log.write(message.indexOf('\n') < 0 ? message : message.replace('\n', ' '));
+            log.write('\n');
+            return log;
+        } catch (IOException e) {
+            LOG.warning("monitor log: " + e.getMessage() + "; recording stopped");
+            try { log.close(); } catch (IOException ignored) { }
+            return null;
+        }
+    }
+
+    /** Where a match's monitor stream is recorded. */
+    static Path monitorLog(Path matchDir) { return matchDir.resolve("monitor.log.gz"); }
 
     private void startTeam(Team t) {
         try {

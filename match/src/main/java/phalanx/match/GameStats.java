@@ -1,0 +1,298 @@
+package phalanx.match;
+
+import phalanx.comm.monitor.MatchState;
+import phalanx.comm.monitor.MonitorHeader;
+import phalanx.comm.monitor.MonitorScene;
+import phalanx.comm.perception.PlayMode;
+import phalanx.comm.perception.Side;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.EnumMap;
+import java.util.HashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.zip.GZIPInputStream;
+
+/**
+ * What happened in a game, per team, from its monitor log (one monitor message a line, as the match
+ * runner records it in {@code monitor.log.gz}): goals, kicks and how far they went, shots on goal,
+ * possession, where the ball was, falls and time lying, robots the referee moved, set pieces.
+ * A pure fold over the messages; every definition is in the field comments below (docs/matches.md).
+ */
+public final class GameStats {
+    /** A torso more than 60 degrees from upright is lying (as scripts/phalanx watch marks it). */
+    static final double LYING_UP_Z = 0.5;
+    /** The ball leaves from rest: below this speed before, m/s ... */
+    static final double REST_SPEED = 0.5;
+    /** ... and above this after (a walking push stays below it). */
+    static final double KICK_SPEED = 1.2;
+    /** A kick ends when the ball is back below this speed. */
+    static final double STOP_SPEED = 0.3;
+    /** Faster than any kick (~10 m/s at most): the trainer or the referee put the ball somewhere. */
+    static final double TELEPORT_SPEED = 15;
+    /** A torso that moves this far between two pictures 0.1 s or less apart was moved by the referee. */
+    static final double RELOCATION_M = 1.0;
+    /** The kicker is the nearest torso, if it is this close to the ball. */
+    static final double KICKER_RANGE = 1.0;
+    static final double FIELD_HALF_LENGTH = 15, GOAL_HALF_WIDTH = 1.05, THIRD_X = 5;
+    /** A shot on goal ends in the goal or within this of the goal line, having been aimed between the posts. */
+    static final double SHOT_END_M = 2.0;
+
+    /** One team's figures. Times in seconds of game time. */
+    public static final class TeamStats {
+        public String name;
+        public int goals, kicks, kicksOver8m, kicksUnder1_5m, shotsOnGoal, falls, relocated;
+        public double possessionS, ownThirdS, middleS, opponentThirdS, lyingS;
+        /** Set pieces awarded to this team, by play mode (free kicks count the other side's fouls). */
+        public final Map<String, Integer> setPieces = new HashMap<>();
+
+        int setPiece(String kind) { return setPieces.getOrDefault(kind, 0); }
+    }
+
+    private final MonitorScene scene = new MonitorScene();
+    private final MonitorHeader header = new MonitorHeader();
+    private final Map<Side, TeamStats> teams = new EnumMap<>(Side.class);
+    private final int players;
+    private MatchState state = MatchState.INITIAL;
+    private double lastTime = Double.NaN;
+    private double[] lastBall;
+    private double lastBallSpeed;
+    private final double[][][] lastTorso = new double[2][12][];   // side, unum: {x, y, upZ}
+    private Kick kick;                                            // the kick in flight, or null
+    private PlayMode lastMode = PlayMode.BEFORE_KICK_OFF;
+    private double playOnS;
+    private long messages, unreadable;
+    final double[][] ballCells = new double[30][20];              // PlayOn seconds per 1 m cell, for the heat map
+
+    private record Kick(Side team, double x0, double y0, double dx, double dy) {}
+
+    public GameStats(int players) {
+        this.players = players;
+        for (Side s : Side.values()) teams.put(s, new TeamStats());
+    }
+
+    public TeamStats team(Side side) { return teams.get(side); }
+    public double playOnSeconds() { return playOnS; }
+    public long messages() { return messages; }
+    public long unreadable() { return unreadable; }
+    public MatchState state() { return state; }
+
+    /** Folds one monitor message in; one the scene reader cannot read is counted and skipped. */
+    public void accept(String message) {
+        messages++;
+        state = header.apply(state, message);
+        try {
+            scene.apply(message);
+        } catch (IllegalArgumentException e) {
+            unreadable++;
+            return;
+        }
+        teams.get(Side.LEFT).goals = state.scoreLeft();
+        teams.get(Side.RIGHT).goals = state.scoreRight();
+        if (state.teamLeft() != null) teams.get(Side.LEFT).name = state.teamLeft();
+        if (state.teamRight() != null) teams.get(Side.RIGHT).name = state.teamRight();
+        PlayMode mode = state.playMode();
+        if (mode != lastMode) modeChanged(mode);
+        double t = state.time();
+        double[] ball = scene.ball();
+        if (!scene.hasScene() || ball == null || !Double.isFinite(t)) return;
+        double dt = Double.isFinite(lastTime) ? t - lastTime : 0;
+        if (dt > 0 && dt <= 1) step(mode, dt, ball);
+        if (dt != 0 || !Double.isFinite(lastTime)) {
+            lastTime = t;
+            lastBall = ball;
+        }
+    }
+
+    private void modeChanged(PlayMode mode) {
+        endKick(lastBall);
+        lastMode = mode;
+        Side owner = mode.owner();
+        String kind = switch (mode) {
+            case FREE_KICK_LEFT, FREE_KICK_RIGHT -> "free_kick";
+            case DIRECT_FREE_KICK_LEFT, DIRECT_FREE_KICK_RIGHT -> "direct_free_kick";
+            case KICK_IN_LEFT, KICK_IN_RIGHT -> "kick_in";
+            case CORNER_KICK_LEFT, CORNER_KICK_RIGHT -> "corner";
+            case GOAL_KICK_LEFT, GOAL_KICK_RIGHT -> "goal_kick";
+            case OFFSIDE_LEFT, OFFSIDE_RIGHT -> "offside";
+            default -> null;
+        };
+        if (kind != null && owner != null) teams.get(owner).setPieces.merge(kind, 1, Integer::sum);
+    }
+
+    private void step(PlayMode mode, double dt, double[] ball) {
+        boolean playOn = mode == PlayMode.PLAY_ON;
+        boolean beamsAllowed = mode.allowsBeam();
+        double bestD = Double.POSITIVE_INFINITY;
+        Side nearest = null;
+        for (Side side : Side.values()) {
+            TeamStats ts = teams.get(side);
+            for (int u = 1; u <= players; u++) {
+                MonitorScene.Pose p = scene.torso(u, side == Side.LEFT ? "Left" : "Right");
+                double[] last = lastTorso[side.ordinal()][u];
+                if (p == null) { lastTorso[side.ordinal()][u] = null; continue; }
+                boolean lying = p.upZ() < LYING_UP_Z;
+                if (last != null) {
+                    if (lying && !(last[2] < LYING_UP_Z)) ts.falls++;
+                    if (!beamsAllowed && dt <= 0.1 && Math.hypot(p.x() - last[0], p.y() - last[1]) > RELOCATION_M) ts.relocated++;
+                }
+                if (lying) ts.lyingS += dt;
+                lastTorso[side.ordinal()][u] = new double[] {p.x(), p.y(), p.upZ()};
+                double d = Math.hypot(p.x() - ball[0], p.y() - ball[1]);
+                if (d < bestD) { bestD = d; nearest = side; }
+            }
+        }
+        if (playOn) {
+            playOnS += dt;
+            if (nearest != null) teams.get(nearest).possessionS += dt;
+            double x = ball[0];
+            TeamStats left = teams.get(Side.LEFT), right = teams.get(Side.RIGHT);
+            if (x < -THIRD_X) { left.ownThirdS += dt; right.opponentThirdS += dt; }
+            else if (x > THIRD_X) { left.opponentThirdS += dt; right.ownThirdS += dt; }
+            else { left.middleS += dt; right.middleS += dt; }
+            int cx = (int) Math.floor(x + 15), cy = (int) Math.floor(ball[1] + 10);
+            if (cx >= 0 && cx < 30 && cy >= 0 && cy < 20) ballCells[cx][cy] += dt;
+        }
+        if (lastBall == null) return;
+        double speed = Math.hypot(ball[0] - lastBall[0], ball[1] - lastBall[1]) / dt;
+        if (speed > TELEPORT_SPEED) {
+            kick = null;                                  // placed, not kicked
+        } else if (kick == null && lastBallSpeed < REST_SPEED && speed > KICK_SPEED) {
+            Side kicker = kicker(lastBall);
+            if (kicker != null) kick = new Kick(kicker, lastBall[0], lastBall[1], ball[0] - lastBall[0], ball[1] - lastBall[1]);
+        } else if (kick != null && speed < STOP_SPEED) {
+            endKick(ball);
+        }
+        lastBallSpeed = speed > TELEPORT_SPEED ? 0 : speed;
+    }
+
+    /** The team of the torso nearest the ball, if one is within reach. */
+    private Side kicker(double[] ball) {
+        double best = KICKER_RANGE;
+        Side team = null;
+        for (Side side : Side.values()) {
+            for (int u = 1; u <= players; u++) {
+                double[] t = lastTorso[side.ordinal()][u];
+                if (t == null) continue;
+                double d = Math.hypot(t[0] - ball[0], t[1] - ball[1]);
+                if (d < best) { best = d; team = side; }
+            }
+        }
+        return team;
+    }
+
+    private void endKick(double[] end) {
+        Kick k = kick;
+        kick = null;
+        if (k == null || end == null) return;
+        TeamStats ts = teams.get(k.team());
+        double dist = Math.hypot(end[0] - k.x0(), end[1] - k.y0());
+        ts.kicks++;
+        if (dist > 8) ts.kicksOver8m++;
+        if (dist < 1.5) ts.kicksUnder1_5m++;
+        double goalX = k.team() == Side.LEFT ? FIELD_HALF_LENGTH : -FIELD_HALF_LENGTH;
+        if (Math.signum(k.dx()) != Math.signum(goalX)) return;
+        double yAtLine = k.y0() + k.dy() * (goalX - k.x0()) / k.dx();
+        if (Math.abs(yAtLine) <= GOAL_HALF_WIDTH && Math.abs(goalX - end[0]) <= SHOT_END_M) ts.shotsOnGoal++;
+    }
+
+    /** The machine-readable line of one team. */
+    public String line(Side side) {
+        TeamStats t = teams.get(side);
+        double p = playOnS > 0 ? playOnS : Double.NaN;
+        return String.format(Locale.ROOT, "game-stats side=%s team=%s goals=%d shots_on_goal=%d kicks=%d kicks_over_8m=%d"
+                        + " kicks_under_1_5m=%d possession=%.3f ball_own_third=%.3f ball_middle=%.3f ball_opponent_third=%.3f"
+                        + " falls=%d lying_s=%.1f relocated=%d free_kicks=%d direct_free_kicks=%d kick_ins=%d corners=%d"
+                        + " goal_kicks=%d offsides=%d play_on_s=%.1f",
+                side == Side.LEFT ? "left" : "right", t.name == null ? "?" : t.name, t.goals, t.shotsOnGoal, t.kicks,
+                t.kicksOver8m, t.kicksUnder1_5m, t.possessionS / p, t.ownThirdS / p, t.middleS / p, t.opponentThirdS / p,
+                t.falls, t.lyingS, t.relocated, t.setPiece("free_kick"), t.setPiece("direct_free_kick"), t.setPiece("kick_in"),
+                t.setPiece("corner"), t.setPiece("goal_kick"), t.setPiece("offside"), playOnS);
+    }
+
+    /** A ball heat map over the PlayOn time: the field in 1 m cells, darker where the ball spent longer. */
+    public String svg() {
+        double max = 0;
+        for (double[] col : ballCells) for (double v : col) max = Math.max(max, v);
+        StringBuilder b = new StringBuilder("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-16 -12 32 24\" width=\"640\" height=\"480\">\n");
+        b.append("<rect x=\"-16\" y=\"-12\" width=\"32\" height=\"24\" fill=\"#2e7d32\"/>\n");
+        for (int x = 0; x < 30; x++) {
+            for (int y = 0; y < 20; y++) {
+                if (ballCells[x][y] <= 0) continue;
+                b.append(String.format(Locale.ROOT, "<rect x=\"%d\" y=\"%d\" width=\"1\" height=\"1\" fill=\"#ff6f00\" fill-opacity=\"%.3f\"/>\n",
+                        x - 15, 9 - y, 0.15 + 0.85 * ballCells[x][y] / max));
+            }
+        }
+        b.append("<rect x=\"-15\" y=\"-10\" width=\"30\" height=\"20\" fill=\"none\" stroke=\"white\" stroke-width=\"0.08\"/>\n");
+        b.append("<line x1=\"0\" y1=\"-10\" x2=\"0\" y2=\"10\" stroke=\"white\" stroke-width=\"0.08\"/>\n");
+        b.append("<rect x=\"-15.6\" y=\"-1.05\" width=\"0.6\" height=\"2.1\" fill=\"none\" stroke=\"white\" stroke-width=\"0.08\"/>\n");
+        b.append("<rect x=\"15\" y=\"-1.05\" width=\"0.6\" height=\"2.1\" fill=\"none\" stroke=\"white\" stroke-width=\"0.08\"/>\n");
+        b.append(String.format(Locale.ROOT, "<text x=\"0\" y=\"-10.6\" font-size=\"1\" fill=\"black\" text-anchor=\"middle\">%s %d:%d %s (ball, %.0f s of PlayOn)</text>\n",
+                esc(teams.get(Side.LEFT).name), state.scoreLeft(), state.scoreRight(), esc(teams.get(Side.RIGHT).name), playOnS));
+        return b.append("</svg>\n").toString();
+    }
+
+    private static String esc(String s) {
+        return s == null ? "?" : s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+    }
+
+    /** Reads a monitor log, plain or gzipped, one message a line. */
+    public static GameStats read(Path log, int players) throws IOException {
+        GameStats g = new GameStats(players);
+        try (InputStream raw = Files.newInputStream(log);
+             InputStream in = log.toString().endsWith(".gz") ? new GZIPInputStream(raw) : raw;
+             BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.ISO_8859_1))) {
+            for (String line; (line = r.readLine()) != null; ) if (!line.isBlank()) g.accept(line);
+        }
+        return g;
+    }
+
+    static final String USAGE = """
+            usage: scripts/phalanx stats game MONITOR_LOG [--svg OUT.svg] [--players 11]
+              MONITOR_LOG is a match's monitor.log.gz (scripts/phalanx match records one per match) or any
+              monitor stream saved one message a line; prints one game-stats line per team""";
+
+    public static void main(String[] argv) {
+        Path log = null, svg = null;
+        int players = 11;
+        try {
+            for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of())) {
+                switch (p[0]) {
+                    case "--svg" -> svg = Path.of(p[1]);
+                    case "--players" -> players = (int) Flags.number(p[0], p[1], 1, 11, true);
+                    default -> throw Flags.unknown(p[0], USAGE);
+                }
+            }
+            if (argv.length == 0 || argv[0].startsWith("-")) throw new IllegalArgumentException("game-stats: a monitor log is needed\n" + USAGE);
+            log = Path.of(argv[0]);
+            if (!Files.isRegularFile(log)) throw new IllegalArgumentException("game-stats: no file " + log);
+        } catch (IllegalArgumentException e) {
+            boolean help = e.getMessage().equals(USAGE);
+            (help ? System.out : System.err).println(e.getMessage());
+            System.exit(help ? 0 : 2);
+        }
+        try {
+            GameStats g = read(log, players);
+            if (g.messages() == 0 || !g.scene.hasScene()) {
+                System.err.println("game-stats: " + log + " holds no monitor scene (" + g.messages() + " lines read)");
+                System.exit(1);
+            }
+            System.out.println(g.line(Side.LEFT));
+            System.out.println(g.line(Side.RIGHT));
+            if (g.unreadable() > 0) System.err.println("game-stats: " + g.unreadable() + " of " + g.messages() + " lines were not monitor messages and were skipped");
+            if (svg != null) {
+                Files.writeString(svg, g.svg());
+                System.err.println("game-stats: wrote " + svg);
+            }
+        } catch (IOException e) {
+            System.err.println("game-stats: cannot read " + log + ": " + e.getMessage());
+            System.exit(1);
+        }
+    }
+}

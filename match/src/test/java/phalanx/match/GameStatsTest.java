@@ -1,0 +1,94 @@
+package phalanx.match;
+
+import org.junit.jupiter.api.Test;
+import phalanx.comm.perception.Side;
+import phalanx.comm.recording.Recordings;
+
+import java.nio.file.Path;
+import java.util.Locale;
+
+import static org.junit.jupiter.api.Assertions.*;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+class GameStatsTest {
+    private static final String MODES = "(play_modes BeforeKickOff KickOff_Left KickOff_Right PlayOn KickIn_Left KickIn_Right"
+            + " corner_kick_left corner_kick_right goal_kick_left goal_kick_right offside_left offside_right GameOver"
+            + " Goal_Left Goal_Right free_kick_left free_kick_right direct_free_kick_left direct_free_kick_right pass_left pass_right)";
+    private static final int PLAY_ON = 3, FREE_KICK_LEFT = 15;
+
+    /** A full scene: the ball and player 1 of the left team, upright or lying on its back. */
+    private static String scene(double t, int mode, double bx, double by, double px, double py, boolean lying) {
+        String torso = lying ? "1 0 0 0 0 0 1 0 0 -1 0 0" : "1 0 0 0 0 1 0 0 0 0 1 0";
+        return String.format(Locale.ROOT, "(%s(time %.2f)(half 1)(score_left 0)(score_right 0)(play_mode %d))(RSG 0 1)("
+                        + "(nd TRF (SLT 1 0 0 0 0 1 0 0 0 0 1 0 %.3f %.3f 0.042 1)(nd StaticMesh (load models/soccerball.obj)))"
+                        + "(nd TRF (SLT %s %.3f %.3f 0.38 1)(nd TRF (nd StaticMesh (load models/naobody.obj) (resetMaterials matLeft matNum1)))))",
+                MODES, t, mode, bx, by, torso, px, py);
+    }
+
+    @Test
+    void aKickTowardTheGoalAFallARelocationAndAFreeKickAreCountedForTheirTeam() {
+        GameStats g = new GameStats(11);
+        double t = 0;
+        // 0.4 s at rest: the ball at (10, 0), our player 1 just behind it
+        for (int i = 0; i <= 10; i++, t += 0.04) g.accept(scene(t, PLAY_ON, 10, 0, 9.8, 0, false));
+        // kicked: 4 m/s along +x into the goal (0.16 m a picture), then at rest at x = 15.3
+        double x = 10;
+        while (x < 15.3) { x = Math.min(15.3, x + 0.16); g.accept(scene(t, PLAY_ON, x, 0, 9.8, 0, false)); t += 0.04; }
+        for (int i = 0; i < 5; i++, t += 0.04) g.accept(scene(t, PLAY_ON, 15.3, 0, 9.8, 0, false));
+        // lies down for 1 s, then stands
+        for (int i = 0; i < 25; i++, t += 0.04) g.accept(scene(t, PLAY_ON, 15.3, 0, 9.8, 0, true));
+        for (int i = 0; i < 5; i++, t += 0.04) g.accept(scene(t, PLAY_ON, 15.3, 0, 9.8, 0, false));
+        // the ball put 5 m away in one picture (a placement, not a kick); the robot moved 3 m in one picture
+        g.accept(scene(t, PLAY_ON, 10.3, 0, 9.8, 0, false)); t += 0.04;
+        g.accept(scene(t, PLAY_ON, 10.3, 0, 6.8, 0, false)); t += 0.04;
+        // a free kick for the left team
+        g.accept(scene(t, FREE_KICK_LEFT, 10.3, 0, 6.8, 0, false)); t += 0.04;
+
+        GameStats.TeamStats us = g.team(Side.LEFT), them = g.team(Side.RIGHT);
+        assertEquals(1, us.kicks, g.line(Side.LEFT));
+        assertEquals(1, us.shotsOnGoal);
+        assertEquals(0, us.kicksOver8m);
+        assertEquals(0, us.kicksUnder1_5m, "the kick went 5.3 m");
+        assertEquals(1, us.falls);
+        assertEquals(1.0, us.lyingS, 0.05);
+        assertEquals(1, us.relocated);
+        assertEquals(1, us.setPiece("free_kick"));
+        assertEquals(0, them.kicks + them.falls + them.relocated);
+        assertEquals(1.0, us.possessionS / g.playOnSeconds(), 1e-9, "nobody else on the field");
+        assertEquals(1.0, us.opponentThirdS / g.playOnSeconds(), 1e-9, "the ball never left x > 5");
+        assertEquals(us.opponentThirdS, them.ownThirdS, 1e-9);
+        String line = g.line(Side.LEFT);
+        assertTrue(line.startsWith("game-stats side=left ") && line.contains(" kicks=1 ") && line.contains(" falls=1 "), line);
+        assertTrue(g.svg().startsWith("<svg") && g.svg().contains("fill-opacity"), "a heat map with cells");
+    }
+
+    @Test
+    void aLineThatIsNoMonitorMessageIsSkippedAndCounted() {
+        GameStats g = new GameStats(11);
+        g.accept(scene(0, PLAY_ON, 0, 0, 1, 1, false));
+        g.accept("((time 1.0)(RSG 0 1)((nd TRF (SLT 1 0");    // truncated
+        g.accept(scene(0.04, PLAY_ON, 0, 0, 1, 1, false));
+        assertEquals(3, g.messages());
+        assertEquals(1, g.unreadable());
+    }
+
+    /** On the monitor stream recorded from the real server (M1, recordings README; skips without it). */
+    @Test
+    void theRecordedTrainerRunHasOnlyPlacementsAndOneMove() throws Exception {
+        assumeTrue(Recordings.dir().isPresent(), Recordings.missingMessage());
+        GameStats g = GameStats.read(Recordings.dir().get().resolve("M1_monitor.txt"), 11);
+        assertEquals(0, g.unreadable());
+        GameStats.TeamStats us = g.team(Side.LEFT);
+        // M1_trainer.txt: the ball is only ever placed ((ball (pos ..)) three times, (dropBall)), never kicked
+        assertEquals(0, us.kicks + g.team(Side.RIGHT).kicks, g.line(Side.LEFT));
+        // ... and the robot is moved 2.2 m by (agent ... (move -2 2 0.4 0)) at 7.62 s, in PlayOn
+        assertEquals(1, us.relocated);
+        assertEquals(1.0, us.possessionS / g.playOnSeconds(), 1e-9, "the only robot on the field");
+        assertTrue(g.playOnSeconds() > 3 && g.playOnSeconds() < 6, "PlayOn from 4.62 s to the end: " + g.playOnSeconds());
+    }
+
+    @Test
+    void theCommandRefusesAMissingLog() {
+        assertThrows(java.nio.file.NoSuchFileException.class, () -> GameStats.read(Path.of("/nonexistent/monitor.log.gz"), 11));
+    }
+}
