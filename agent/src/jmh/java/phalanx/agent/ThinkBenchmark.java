@@ -23,7 +23,7 @@ import java.util.concurrent.TimeUnit;
  * recorded perceptor stream, without the socket: the think time the 20 ms cycle budget is about.
  * Player 1 runs the coordinator too. {@link #parse} is the parser alone on the same stream: its
  * allocation is the perception the cycle must build (agent/README.md, "Measured cost").
- * Script: scripts/think-bench.
+ * Script: scripts/phalanx bench think.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)

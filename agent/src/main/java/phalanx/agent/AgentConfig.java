@@ -87,7 +87,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          nearer the opponent goal than this (ours; 0 = always kick, the thesis's Figure 4.14)
      */
     /**
-     * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/kick-search params
+     * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params
      * motions/strong_kick.xml`): a ball 1-2 cm nearer is struck earlier in the swing (its precursor went 6.6 m from 0.17 m
      * ahead against 8.9 m from 0.187 m; motion/README.md "Kicks and dives").
      */
@@ -100,7 +100,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
 
         /**
          * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
-         * of 10 kicks on that type), tuned for this spot (motions/README.md, `scripts/kick-search params`).
+         * of 10 kicks on that type), tuned for this spot (motions/README.md, `scripts/phalanx bench kick-search params`).
          */
         public static final Kick TYPE_4 = DEFAULT.withStrongSpot(0.185, -0.035);
 
@@ -142,14 +142,14 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          it takes for our agent to fall"): dive_left/right.xml reach 90 % of their
      *                          0.70 m lateral reach 0.66-0.80 s (median of the medians 0.69 s) after the
      *                          request on types 0, 2 and 4
-     *                          (`scripts/motion-bench --only dive`, motion/README.md "Dives")
+     *                          (`scripts/phalanx bench motion --only dive`, motion/README.md "Dives")
      * @param postMargin        Threshold_Left/Right = goal half width + this (5.13; the margin is ours)
      * @param bodyBlock         a ball crossing closer than this to the keeper's centre is left to the body (ours:
      *                          the feet reach 0.095 m out, the hip's 0.055 m (NaoModel) and half
      *                          the 0.08 m foot, plus the ball's 0.042 m radius; 0.08 m
      *                          before, and the keeper dived away from balls rolling at its feet in the 6.3 test)
      * @param ballDecay         rolling ball velocity decay rate, 1/s: v(t) = v0·e^(−k·t) (ours: 1.053
-     *                          derived from SimSpark's ball.rsg drag, 1.062 measured by scripts/ball-decay)
+     *                          derived from SimSpark's ball.rsg drag, 1.062 measured by scripts/phalanx bench ball-decay)
      * @param minApproachSpeed  slower balls are not dived for (ours; tracker noise on a still ball)
      * @param relocalizeDistance Guard goes back to Localize when this far off its spot (ours)
      * @param liberoClearance   Libero only when no other player is this close to the ball (5.13 "no other
@@ -170,7 +170,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param libero            whether Guard goes Libero at all (5.13: yes). Off by default while every kick
      *                          ends with the robot on the ground (motion/README.md): in the 6.3 test against
      *                          FC Portugal each Libero clearance left the keeper lying in front of an open goal
-     *                          (docs/matches.md, scripts/keeper-test)
+     *                          (docs/matches.md, scripts/phalanx keeper-test)
      */
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,

@@ -7,7 +7,7 @@ import java.util.logging.Logger;
 
 /**
  * One log line when the player goes down and one when it stands again, with the game time and how
- * long it was down: scripts/player-stats counts them (falls and get-up times in real games). It stands
+ * long it was down: scripts/phalanx stats player counts them (falls and get-up times in real games). It stands
  * again only after {@link #STEADY_SECONDS} of STANDING in a row: halfway through a get-up the torso
  * already reads as upright, and a failed try that falls back is the same fall. Rare events, so logging
  * them costs nothing in the cycle.

@@ -12,7 +12,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 /**
  * Each robot type prepares its kicks at the ball spot the kick file it plays was tuned for: the spot
- * its description states ("Ball X m ahead of the torso, Y m right", written by scripts/kick-search).
+ * its description states ("Ball X m ahead of the torso, Y m right", written by scripts/phalanx bench kick-search).
  * A re-tuned file with a new spot and a config left behind would strike the ball early (motion/README.md).
  */
 class KickSpotTest {

@@ -5,7 +5,7 @@ import org.junit.jupiter.api.Test;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** The think-time line the player logs and scripts/player-stats reads, for cycles chosen by hand. */
+/** The think-time line the player logs and scripts/phalanx stats player reads, for cycles chosen by hand. */
 class ThinkTimesTest {
     @Test
     void wallAndCpuPercentilesAreBucketUpperEdges() {

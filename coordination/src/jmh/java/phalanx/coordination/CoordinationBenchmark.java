@@ -27,7 +27,7 @@ import phalanx.model.field.Vector2;
  * Active mode: 3 active and 7 support players), the same in Support mode (10 support players), and the
  * support mapping alone (7 players as in the first, 10 as in the second), over 256 random situations
  * visited in turn.
- * Run: {@code scripts/coord-bench}, or {@code gradle -q :coordination:jmh -PjmhArgs='CoordinationBenchmark -f 1'}.
+ * Run: {@code scripts/phalanx bench coord}, or {@code gradle -q :coordination:jmh -PjmhArgs='CoordinationBenchmark -f 1'}.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)

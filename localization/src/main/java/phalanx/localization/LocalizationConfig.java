@@ -3,7 +3,7 @@ package phalanx.localization;
 /**
  * Every constant of the localization module, in one place. Thesis values are the defaults and say
  * where they come from; constants the thesis does not give were chosen here and measured with
- * {@code scripts/localize-eval} (localization/README.md).
+ * {@code scripts/phalanx bench localize} (localization/README.md).
  *
  * @param filter               which self-localization filter the belief store runs
  * @param fifoMaxSize          Algorithm 1's MaxSize (thesis 4.4.3: default 10)
@@ -29,7 +29,7 @@ package phalanx.localization;
  *                             the horizontal; lying on a side (or nearly) counts as FALLEN_FRONT. With the chest
  *                             near horizontal the sign of the forward axis is noise and would flip the choice
  *                             between retries; both get-ups stood about 2 in 3 side-lying trials
- *                             (motion/README.md, scripts/motion-bench); not in the thesis
+ *                             (motion/README.md, scripts/phalanx bench motion); not in the thesis
  * @param accSmoothing         share of the accelerometer mixed into the gyro-integrated tilt per cycle; not in the thesis
  * @param fallTiltCycles       cycles in a row the accelerometer must show the tilt before it says "falling": in the
  *                             real server the omni walk's foot impacts tilt single readings past 90° (81 of 500

@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.util.List;
 
 /**
- * What {@code scripts/match} writes at the end of a game (one JSON file): the score, the goals with
+ * What {@code scripts/phalanx match} writes at the end of a game (one JSON file): the score, the goals with
  * their game time, the play-mode timeline, each team's players that never connected or disconnected,
  * and how the processes ended. {@code completed} is true only when the server reached GameOver.
  * {@code playWallSeconds}: wall time from the first kick-off to the end; against {@code gameTime} it

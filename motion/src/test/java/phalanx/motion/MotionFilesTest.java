@@ -64,7 +64,7 @@ class MotionFilesTest {
         }
     }
 
-    /** The left-right twin of a joint (scripts/mirror-motion's rule). */
+    /** The left-right twin of a joint (scripts/phalanx mirror-motion's rule). */
     private static Joint twin(Joint j) {
         String n = j.perceptorName();
         char side = n.charAt(0);

@@ -16,7 +16,7 @@ import java.util.concurrent.TimeUnit;
  * usage error.
  */
 public final class Main {
-    private static final String USAGE = "usage: sim-stub <recording> [--port P] [--paced] [--log FILE]\n"
+    private static final String USAGE = "usage: scripts/phalanx replay <recording> [--port P] [--paced] [--log FILE]\n"
             + "  <recording>  path prefix such as ../shared/recordings/S1, or a *_perceptors.txt file\n"
             + "  --port P     port to listen on, 127.0.0.1 (default 3100)\n"
             + "  --paced      send a line every 20 ms instead of waiting for each reply\n"

@@ -10,7 +10,7 @@ import phalanx.model.field.Vector2;
  * (7/5)·m·dv/dt = −(0.01 + 0.00005/r²)·v, i.e. dv/dt = −k·v with k = 1.05 /s (a sliding ball
  * would have 0.385 /s). So v(t) = v0·e^(−k·t), the path stays straight, and the distance covered
  * is s(t) = v0·(1 − e^(−k·t))/k, at most v0/k. Measured in rcssserver3d 0.7.3 with
- * scripts/ball-decay: k = 1.062 /s for every start speed (the drag is linear); a ball set moving
+ * scripts/phalanx bench ball-decay: k = 1.062 /s for every start speed (the drag is linear); a ball set moving
  * without spin first slides and rolls on at 0.63 of its speed (agent/README.md).
  */
 public final class BallRoll {

@@ -13,7 +13,7 @@ import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;
 
 /**
- * A plain-text coordination input, to reproduce and picture a situation (scripts/coord-snapshot).
+ * A plain-text coordination input, to reproduce and picture a situation (scripts/phalanx snapshot).
  * One directive per line, {@code #} starts a comment, coordinates in metres in the team's own frame
  * (own goal at -x), angles in degrees:
  * <pre>

@@ -15,7 +15,7 @@ import phalanx.coordination.support.DynamicProgrammingSupportMapper;
 import phalanx.coordination.support.ScramSupportMapper;
 
 /**
- * {@code scripts/coord-snapshot}: reads a scenario file, runs one coordination round, writes the picture as
+ * {@code scripts/phalanx snapshot}: reads a scenario file, runs one coordination round, writes the picture as
  * SVG and prints the assignments, one line each. Usage: {@code Snapshot <scenario file> <out.svg>}.
  */
 public final class Snapshot {

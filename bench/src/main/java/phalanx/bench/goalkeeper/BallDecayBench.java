@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * scripts/ball-decay: measures how a rolling ball slows down in a running rcssserver3d, to check
+ * scripts/phalanx bench ball-decay: measures how a rolling ball slows down in a running rcssserver3d, to check
  * {@link BallRoll}'s model v(t) = v0·e^(−k·t). Through the monitor port only (trainer commands and
  * the scene graph's ground truth; no player needed): PlayOn, then for each speed the ball is set
  * at (-8, ±0.5) with velocity (v0, 0, 0) and followed until it stops. For each run it prints the

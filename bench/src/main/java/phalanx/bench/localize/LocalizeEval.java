@@ -31,7 +31,7 @@ import java.util.regex.Pattern;
 
 /**
  * Replays recordings through the belief store and measures it against their ground truth
- * (scripts/localize-eval). Every cycle with a belief counts: the self error compares the belief
+ * (scripts/phalanx bench localize). Every cycle with a belief counts: the self error compares the belief
  * (converted from the team's frame to the field frame) with the torso; cycles where the torso
  * leans more than 45° (a fall, S3) are reported apart and left out of the self figures.
  */
@@ -237,7 +237,7 @@ public final class LocalizeEval {
 
     private static int usage(PrintStream s, String problem) {
         if (problem != null) s.println("localize-eval: " + problem);
-        s.println("usage: scripts/localize-eval [--filter fifo|ekf] [--pairs equal|geometry] [--compare] <recording>...");
+        s.println("usage: scripts/phalanx bench localize [--filter fifo|ekf] [--pairs equal|geometry] [--compare] <recording>...");
         s.println("  a recording is a path prefix such as ../shared/recordings/S1 (needs X_perceptors.txt and X_groundtruth.txt)");
         return 2;
     }

@@ -18,7 +18,7 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * scripts/walk-bench: one player of each requested type in a running rcssserver3d walks with the
+ * scripts/phalanx bench walk: one player of each requested type in a running rcssserver3d walks with the
  * {@link WalkController}; each trial is set up with trainer commands on the monitor port and
  * measured with the monitor's scene graph (ground truth): forward speed over 10 s and 60 s,
  * turn rate in place, sideways speed, falls. With {@code --search} it tunes the named config

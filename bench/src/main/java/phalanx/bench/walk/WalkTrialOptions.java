@@ -11,7 +11,7 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * Command line of scripts/walk-bench. Every bad flag gets a message naming it.
+ * Command line of scripts/phalanx bench walk. Every bad flag gets a message naming it.
  *
  * @param scenarios   which trials: forward10, forward60, turn, side, mixed (in the order listed; mixed
  *                    only when named)

@@ -67,7 +67,7 @@ class ScenarioFileTest {
 
     @Test
     void shippedScenariosParse() throws Exception {
-        Path dir = Path.of("coordination/scenarios");
+        Path dir = Path.of("bench/scenarios");
         for (String name : new String[]{"offense.txt", "defense.txt"}) {
             Scenario s = ScenarioFile.parse(Files.readString(dir.resolve(name)), name);
             assertEquals(11, s.beliefs().reports().size(), name);

@@ -14,7 +14,7 @@ import phalanx.bench.coordination.ScenarioFile;
 
 class SnapshotTest {
     private static TeamPlan plan(String file) throws Exception {
-        Scenario s = ScenarioFile.parse(Files.readString(Path.of("coordination/scenarios", file)), file);
+        Scenario s = ScenarioFile.parse(Files.readString(Path.of("bench/scenarios", file)), file);
         return Snapshot.plan(s);
     }
 

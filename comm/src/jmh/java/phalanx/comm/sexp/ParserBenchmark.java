@@ -20,7 +20,7 @@ import java.util.concurrent.TimeUnit;
 /**
  * Parses every perceptor message of every shared recording, one message per invocation.
  * Throughput in MB/s = ops/s x mean message size (printed at setup); run with -prof gc for
- * the allocation per message (gc.alloc.rate.norm). Script: scripts/parser-bench.
+ * the allocation per message (gc.alloc.rate.norm). Script: scripts/phalanx bench parser.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.Throughput)

@@ -33,7 +33,7 @@ public final class CoordinationSchedule {
 
     /**
      * The setting for a measured round: a single cycle when the round's measured cost (for instance the
-     * p99 from {@code scripts/coord-bench}) fits the budget the coordinator may spend per cycle.
+     * p99 from {@code scripts/phalanx bench coord}) fits the budget the coordinator may spend per cycle.
      */
     public static CoordinationSchedule fitting(Coordinator coordinator, double budgetMicros, double roundMicros) {
         return new CoordinationSchedule(coordinator, roundMicros <= budgetMicros);

@@ -2,7 +2,7 @@ package phalanx.localization.belief;
 
 /**
  * Counts of what the belief store saw and skipped, since it was made (thesis 4.4 input checks;
- * printed by scripts/localize-eval). A skipped item never throws: it is counted here.
+ * printed by scripts/phalanx bench localize). A skipped item never throws: it is counted here.
  */
 public final class BeliefStats {
     long cycles, visionFrames, selfFixes, selfUpdates, noVision, noLandmark, oneLandmark, badPolar,

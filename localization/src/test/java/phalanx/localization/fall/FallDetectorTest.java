@@ -86,7 +86,7 @@ class FallDetectorTest {
 
     /**
      * Our omni walk in the real server (type 0, 0.88 m/s, 10 s without a fall; recorded with
-     * WALK_TRACE=1 scripts/walk-bench, file in test resources): 81 single readings tilt past 50°,
+     * WALK_TRACE=1 scripts/phalanx bench walk, file in test resources): 81 single readings tilt past 50°,
      * foot impacts. None of them may read as falling, or every behaviour stops walking at once.
      */
     @Test

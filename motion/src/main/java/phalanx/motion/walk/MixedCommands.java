@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.SplittableRandom;
 
 /**
- * A game-like sequence of walk requests for the {@code mixed} scenario of scripts/walk-bench: what
+ * A game-like sequence of walk requests for the {@code mixed} scenario of scripts/phalanx bench walk: what
  * the agent's Body asks of the walk while its players chase moving targets (agent Steer and Body):
  * full speed with a lean (turn up to half the turn limit), turns in place, slow approaches, side
  * steps, steps back, stops, and bursts of walk/turn alternation as Steer produces when the heading

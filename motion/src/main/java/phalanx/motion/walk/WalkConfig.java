@@ -3,7 +3,7 @@ package phalanx.motion.walk;
 /**
  * Every number of the omnidirectional walk. The thesis has no parametric walk (its walk is a
  * keyframe motion, 4.5.1, 0.45 m/s in chapter 6), so the defaults are our own, tuned in
- * rcssserver3d 0.7.3 with {@code scripts/walk-bench} (motion/README.md, "Omnidirectional walk").
+ * rcssserver3d 0.7.3 with {@code scripts/phalanx bench walk} (motion/README.md, "Omnidirectional walk").
  *
  * <p>Gait timing: a step (one foot's swing plus the double support before it) lasts
  * {@code stepSeconds}; a full gait cycle is two steps. Lengths are metres, angles degrees.
