@@ -16,7 +16,7 @@ import phalanx.model.robot.NaoModel;
  * @param fallback   the field player's own choice while the coordinator is quiet
  */
 public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obstacles obstacles,
-                          Keeper keeper, Fallback fallback) {
+                          Keeper keeper, Fallback fallback, Approach approach) {
 
     /**
      * @param panAmplitudeDeg  Pan Head / Scan yaw swing each side (ours: ±90° with the 120° field of
@@ -126,6 +126,28 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     }
 
     /**
+     * On Ball's approach (ours, {@code action.ApproachBall}): with a self pose, the robot walks with the
+     * omnidirectional walk to the spot behind the ball on the line from the opponent goal's centre through
+     * it, turning on the way, instead of the thesis's Walk To Ball followed by the align orbit (Figure 4.14).
+     *
+     * @param enabled        false: the thesis's way
+     * @param behind         the spot this far behind the ball's centre (Prepare For Kick steps the last centimetres)
+     * @param sideClearance  a robot not yet behind the ball first goes to a point this far beside it, not through it
+     * @param slowWithin     full speed beyond this distance to the spot, proportionally slower within it
+     * @param faceWayBeyond  beyond this the robot faces where it walks (the walk is fastest forward); within
+     *                       it, the goal
+     * @param turnFullDeg    a heading error this large or larger turns at the walk's full turn rate
+     * @param arriveDistance done within this of the spot ...
+     * @param arriveDeg      ... facing the goal within this
+     */
+    public record Approach(boolean enabled, double behind, double sideClearance, double slowWithin, double faceWayBeyond,
+                           double turnFullDeg, double arriveDistance, double arriveDeg) {
+        public static final Approach DEFAULT = new Approach(true, 0.25, 0.45, 0.5, 1.0, 30, 0.08, 8);
+        /** The thesis's On Ball: Walk To Ball, then the align orbit. */
+        public static final Approach THESIS = new Approach(false, 0.25, 0.45, 0.5, 1.0, 30, 0.08, 8);
+    }
+
+    /**
      * @param range         obstacles within this are recorded (4.6.2: 2 m)
      * @param clearance     escape angles pass an obstacle's centre at this distance (ours: two robots'
      *                      half widths plus a margin)
@@ -193,23 +215,25 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     }
 
     public static final AgentConfig DEFAULT = new AgentConfig(Head.DEFAULT, Beliefs.DEFAULT, Walk.DEFAULT,
-            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT);
+            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT);
 
     public AgentConfig {
         if (head == null || beliefs == null || walk == null || kick == null || obstacles == null
-                || keeper == null || fallback == null) {
+                || keeper == null || fallback == null || approach == null) {
             throw new IllegalArgumentException("every part of the agent config is required");
         }
     }
 
-    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback); }
+    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach); }
 
-    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback); }
+    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach); }
+
+    public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a); }
 
     /** The defaults with the leg geometry of this robot type (the camera height for Track Object) and its kicks. */
     public static AgentConfig forRobotType(int type) {
         Head h = new Head(Head.DEFAULT.panAmplitudeDeg(), Head.DEFAULT.panPeriodSeconds(), Head.DEFAULT.scanPitchDownDeg(),
                 NaoModel.ofType(type), Head.DEFAULT.leadSeconds());
-        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT);
+        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT);
     }
 }

@@ -72,6 +72,10 @@ public final class Body {
             return new WalkVelocity(forward, 0, w.lean() * 0.5 * walkConfig.maxTurnDeg());
         }
         if (move instanceof Move.Turn t) return new WalkVelocity(0, 0, (t.left() ? 1 : -1) * t.gain() * walkConfig.maxTurnDeg());
+        if (move instanceof Move.Omni o) {
+            double forward = o.forward() * (o.forward() >= 0 ? walkConfig.maxForward() : walkConfig.maxBackward());
+            return new WalkVelocity(forward, o.left() * walkConfig.maxLeft(), o.turn() * walkConfig.maxTurnDeg());
+        }
         if (move instanceof Move.SideStep s) return new WalkVelocity(0, (s.left() ? 1 : -1) * walkConfig.maxLeft(), 0);
         if (move instanceof Move.StepBack) return new WalkVelocity(-STEP_BACK_SHARE * walkConfig.maxBackward(), 0, 0);
         return null;

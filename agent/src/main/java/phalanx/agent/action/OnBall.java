@@ -15,13 +15,16 @@ import phalanx.model.field.Vector2;
  * lost or taken away it starts again from Walk To Ball. Ours: in PlayOn, with the ball nearer the
  * opponent goal than {@code AgentConfig.Kick.dribbleWithin}, the aligned player dribbles toward the
  * goal (Dribble Ball To Direction) instead of preparing a kick; set pieces are always kicked, since
- * a dribble touches the ball twice (docs/protocol.md, "Set pieces").
+ * a dribble touches the ball twice (docs/protocol.md, "Set pieces"). Ours too: with a self pose and
+ * {@code AgentConfig.Approach.enabled}, the way to the ball is {@link ApproachBall} (to the spot behind
+ * the ball, facing the goal, with the omnidirectional walk), so the align orbit has little left to do.
  */
 public final class OnBall implements Action {
     public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK, DRIBBLE }
 
     private final AgentConfig config;
     private final WalkToBall walk;
+    private final ApproachBall approach;
     private final FindOpponentGoal find;
     private final Orbit orbit;
     private final PrepareForKick prepare;
@@ -34,6 +37,7 @@ public final class OnBall implements Action {
     public OnBall(AgentConfig config) {
         this.config = config;
         this.walk = new WalkToBall(config);
+        this.approach = new ApproachBall(config);
         this.find = new FindOpponentGoal(config);
         this.orbit = new Orbit(config);
         this.prepare = new PrepareForKick(config);
@@ -55,7 +59,10 @@ public final class OnBall implements Action {
         for (int i = 0; i < State.values().length + 1; i++) {
             switch (state) {
                 case WALK_TO_BALL -> {
-                    if (!walk.done(s)) return walk.decide(s);
+                    if (!walk.done(s)) {
+                        boolean approaches = config.approach().enabled() && approach.usable(s) && !approach.done(s);
+                        return approaches ? approach.decide(s) : walk.decide(s);
+                    }
                     state = State.FIND_GOAL;
                 }
                 case FIND_GOAL -> {

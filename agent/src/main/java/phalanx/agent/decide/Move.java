@@ -26,6 +26,20 @@ public sealed interface Move {
         }
     }
 
+    /**
+     * Walk in any direction while turning (the omnidirectional walk, ours): each part a share -1 .. 1 of the
+     * walk's limit (forward: + forward, - backward; left: + left; turn: + counter-clockwise).
+     */
+    record Omni(double forward, double left, double turn) implements Move {
+        public Omni {
+            forward = share(forward);
+            left = share(left);
+            turn = share(turn);
+        }
+
+        private static double share(double v) { return Double.isFinite(v) ? Math.max(-1, Math.min(1, v)) : 0; }
+    }
+
     /** One side step. */
     record SideStep(boolean left) implements Move {}
 

@@ -12,7 +12,8 @@ import phalanx.model.field.Vector2;
 import static org.junit.jupiter.api.Assertions.*;
 
 class FieldPlayerBehaviourTest {
-    private static final AgentConfig C = AgentConfig.DEFAULT;
+    /** The thesis's On Ball (Walk To Ball, then the align orbit); ApproachBallTest has ours. */
+    private static final AgentConfig C = AgentConfig.DEFAULT.withApproach(AgentConfig.Approach.THESIS);
     private static final Vector2 HOME = new Vector2(-5, 2);
 
     @Test

@@ -8,7 +8,8 @@ import static org.junit.jupiter.api.Assertions.*;
 
 /** Figure 4.14 driven by a scripted ball: walk, find the goal, align, prepare, kick, start again. */
 class OnBallTest {
-    private static final AgentConfig C = AgentConfig.DEFAULT;
+    /** The thesis's On Ball (Walk To Ball, then the align orbit); ApproachBallTest has ours. */
+    private static final AgentConfig C = AgentConfig.DEFAULT.withApproach(AgentConfig.Approach.THESIS);
 
     @Test
     void goesThroughItsStatesInOrder() {

@@ -1,0 +1,85 @@
+package phalanx.agent.action;
+
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Action;
+import phalanx.agent.decide.Decision;
+import phalanx.agent.decide.Move;
+import phalanx.agent.decide.Situation;
+import phalanx.model.field.Angles;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
+
+/**
+ * Ours, On Ball's way to the ball when the robot knows where it is (AgentConfig.Approach): instead of
+ * 4.6.2's Walk To Ball (turn, then walk straight at the ball) and the align orbit around it, walk with
+ * the omnidirectional walk to the spot behind the ball on the line from the opponent goal's centre
+ * through the ball, turning on the way, so the robot arrives facing the goal with the ball in front of
+ * its right foot. A robot that is not yet behind the ball goes to a point beside it first, not through it.
+ */
+public final class ApproachBall implements Action {
+    private final AgentConfig config;
+    private final AgentConfig.Approach a;
+    private final TrackObject track;
+
+    public ApproachBall(AgentConfig config) {
+        this.config = config;
+        this.a = config.approach();
+        this.track = TrackObject.ball(config);
+    }
+
+    /** There is a self pose, a ball and a field to approach by. */
+    public boolean usable(Situation s) { return target(s) != null; }
+
+    /**
+     * Where to go, own frame, and the heading to arrive with (toward the goal); null without a self pose,
+     * a ball or a field.
+     */
+    Pose2 target(Situation s) {
+        Pose2 self = Facts.self(s, config);
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (self == null || ball == null || s.field() == null) return null;
+        Vector2 toGoal = s.field().opponentGoal().minus(ball);
+        double n = toGoal.norm();
+        if (!(n > 1e-6)) return null;
+        Vector2 g = toGoal.times(1 / n);
+        Vector2 left = new Vector2(-g.y(), g.x());
+        Vector2 r = self.position().minus(ball);
+        double heading = g.angleDeg();
+        // The right foot's kick wants the torso beside the ball by the spot's side offset (spotY < 0: ball to the right).
+        Vector2 spot = ball.minus(g.times(a.behind())).minus(left.times(config.kick().spotY()));
+        if (r.dot(g) > -0.6 * a.behind()) {
+            double side = r.dot(left) >= 0 ? 1 : -1;
+            Vector2 way = ball.minus(g.times(a.behind())).plus(left.times(side * a.sideClearance()));
+            return new Pose2(way.x(), way.y(), heading);
+        }
+        return new Pose2(spot.x(), spot.y(), heading);
+    }
+
+    @Override
+    public Decision decide(Situation s) {
+        Pose2 t = target(s);
+        Pose2 self = Facts.self(s, config);
+        if (t == null || self == null) return Decision.of(Move.STAND, track.head(s));
+        Vector2 d = t.position().minus(self.position()).rotate(-self.thetaDeg());   // body frame
+        double dist = d.norm();
+        double faceErr = dist > a.faceWayBeyond() ? d.angleDeg() : Angles.difference(t.thetaDeg(), self.thetaDeg());
+        double turn = faceErr / a.turnFullDeg();
+        double scale = Math.min(1, dist / a.slowWithin());
+        double fwd = dist > 1e-9 ? d.x() / dist * scale : 0, left = dist > 1e-9 ? d.y() / dist * scale : 0;
+        // Badly turned, the robot turns first rather than walking sideways across the field.
+        if (Math.abs(faceErr) > 60 && dist > a.faceWayBeyond()) { fwd *= 0.2; left *= 0.2; }
+        return Decision.of(new Move.Omni(fwd, left, turn), track.head(s));
+    }
+
+    /** At the spot behind the ball (not the point beside it), facing the goal. */
+    @Override
+    public boolean done(Situation s) {
+        Pose2 t = target(s);
+        Pose2 self = Facts.self(s, config);
+        if (t == null || self == null) return false;
+        Vector2 ball = Facts.ballGlobal(s, config);
+        boolean behind = self.position().minus(ball).dot(Vector2.polar(1, t.thetaDeg())) <= -0.6 * a.behind();
+        return behind && t.position().distanceTo(self.position()) <= a.arriveDistance()
+                && Math.abs(Angles.difference(t.thetaDeg(), self.thetaDeg())) <= a.arriveDeg();
+    }
+}

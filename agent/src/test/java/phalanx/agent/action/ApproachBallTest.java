@@ -1,0 +1,71 @@
+package phalanx.agent.action;
+
+import org.junit.jupiter.api.Test;
+import phalanx.agent.AgentConfig;
+import phalanx.agent.decide.Move;
+import phalanx.model.field.Pose2;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** On Ball's approach to the spot behind the ball (ours); the opponent goal is at (15, 0). */
+class ApproachBallTest {
+    private static final AgentConfig C = AgentConfig.DEFAULT;
+    private final ApproachBall a = new ApproachBall(C);
+
+    @Test
+    void fromBehindItHeadsForTheSpotBehindTheBallAtFullSpeed() {
+        var s = World.at(-5, 0, 0).ballAt(0, 0).situation();
+        Pose2 t = a.target(s);
+        // 0.25 m behind the ball on the goal line, and 0.055 m left of it so the ball lies before the right foot
+        assertEquals(-0.25, t.x(), 1e-9);
+        assertEquals(0.055, t.y(), 1e-9);
+        assertEquals(0, t.thetaDeg(), 1e-9);
+        Move.Omni m = (Move.Omni) a.decide(s).move();
+        assertEquals(1.0, m.forward(), 1e-3);
+        assertEquals(0, m.left(), 0.02);
+        assertFalse(a.done(s));
+    }
+
+    @Test
+    void fromTheGoalSideItGoesRoundTheBallNotThroughIt() {
+        var s = World.at(1.0, 0.1, 180).ballAt(0, 0).situation();   // between the ball and the goal, facing the ball
+        Pose2 t = a.target(s);
+        assertEquals(-0.25, t.x(), 1e-9);
+        assertEquals(0.45, t.y(), 1e-9, "the point beside the ball on the robot's side");
+        var below = World.at(1.0, -0.1, 180).ballAt(0, 0).situation();
+        assertEquals(-0.45, a.target(below).y(), 1e-9);
+    }
+
+    @Test
+    void atTheSpotFacingTheGoalItIsDoneAndTurnedAwayItTurnsBack() {
+        assertTrue(a.done(World.at(-0.25, 0.055, 3).ballAt(0, 0).situation()));
+        var turned = World.at(-0.25, 0.055, 30).ballAt(0, 0).situation();
+        assertFalse(a.done(turned));
+        Move.Omni m = (Move.Omni) a.decide(turned).move();
+        assertEquals(-1.0, m.turn(), 1e-9, "30 degrees left of the goal: full turn to the right");
+        assertEquals(0, m.forward(), 1e-9);
+    }
+
+    @Test
+    void facingAwayFromAFarSpotItTurnsBeforeItWalks() {
+        Move.Omni m = (Move.Omni) a.decide(World.at(-5, 0, 180).ballAt(0, 0).situation()).move();
+        assertEquals(1.0, Math.abs(m.turn()), 1e-9);
+        assertTrue(Math.hypot(m.forward(), m.left()) <= 0.2 + 1e-9, m.toString());
+    }
+
+    @Test
+    void withoutASelfPoseThereIsNoApproachAndOnBallWalksAsTheThesisDoes() {
+        var lost = World.lost().ballRel(2, 0).situation();
+        assertFalse(a.usable(lost));
+        assertInstanceOf(Move.Walk.class, new OnBall(C).decide(lost).move());
+        assertInstanceOf(Move.Omni.class, new OnBall(C).decide(World.at(-5, 0, 0).ballAt(0, 0).situation()).move());
+    }
+
+    @Test
+    void omniSharesAreClampedAndABadNumberStopsThatPart() {
+        Move.Omni m = new Move.Omni(2, Double.NaN, -3);
+        assertEquals(1, m.forward());
+        assertEquals(0, m.left());
+        assertEquals(-1, m.turn());
+    }
+}
