@@ -131,20 +131,23 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * it, turning on the way, instead of the thesis's Walk To Ball followed by the align orbit (Figure 4.14).
      *
      * @param enabled        false: the thesis's way
-     * @param behind         the spot this far behind the ball's centre (Prepare For Kick steps the last centimetres)
+     * @param behind         the spot this far behind the ball's centre, inside Walk To Ball's stop distance (0.28 m)
+     *                       so that On Ball goes on from there (Prepare For Kick steps the last centimetres;
+     *                       at 0.25 m, in the first game, robots hovered around a spot 0.256 m from the ball)
      * @param sideClearance  a robot not yet behind the ball first goes to a point this far beside it, not through it
-     * @param slowWithin     full speed beyond this distance to the spot, proportionally slower within it
+     * @param slowWithin     full speed beyond this distance to the spot, proportionally slower within it ...
+     * @param minShare       ... but never below this share of it (the walk hardly moves on smaller requests)
      * @param faceWayBeyond  beyond this the robot faces where it walks (the walk is fastest forward); within
      *                       it, the goal
      * @param turnFullDeg    a heading error this large or larger turns at the walk's full turn rate
      * @param arriveDistance done within this of the spot ...
      * @param arriveDeg      ... facing the goal within this
      */
-    public record Approach(boolean enabled, double behind, double sideClearance, double slowWithin, double faceWayBeyond,
-                           double turnFullDeg, double arriveDistance, double arriveDeg) {
-        public static final Approach DEFAULT = new Approach(true, 0.25, 0.45, 0.5, 1.0, 30, 0.08, 8);
+    public record Approach(boolean enabled, double behind, double sideClearance, double slowWithin, double minShare,
+                           double faceWayBeyond, double turnFullDeg, double arriveDistance, double arriveDeg) {
+        public static final Approach DEFAULT = new Approach(true, 0.22, 0.45, 0.5, 0.3, 1.0, 30, 0.12, 12);
         /** The thesis's On Ball: Walk To Ball, then the align orbit. */
-        public static final Approach THESIS = new Approach(false, 0.25, 0.45, 0.5, 1.0, 30, 0.08, 8);
+        public static final Approach THESIS = new Approach(false, 0.22, 0.45, 0.5, 0.3, 1.0, 30, 0.12, 12);
     }
 
     /**

@@ -64,7 +64,7 @@ public final class ApproachBall implements Action {
         double dist = d.norm();
         double faceErr = dist > a.faceWayBeyond() ? d.angleDeg() : Angles.difference(t.thetaDeg(), self.thetaDeg());
         double turn = faceErr / a.turnFullDeg();
-        double scale = Math.min(1, dist / a.slowWithin());
+        double scale = Math.max(a.minShare(), Math.min(1, dist / a.slowWithin()));
         double fwd = dist > 1e-9 ? d.x() / dist * scale : 0, left = dist > 1e-9 ? d.y() / dist * scale : 0;
         // Badly turned, the robot turns first rather than walking sideways across the field.
         if (Math.abs(faceErr) > 60 && dist > a.faceWayBeyond()) { fwd *= 0.2; left *= 0.2; }

@@ -16,8 +16,8 @@ class ApproachBallTest {
     void fromBehindItHeadsForTheSpotBehindTheBallAtFullSpeed() {
         var s = World.at(-5, 0, 0).ballAt(0, 0).situation();
         Pose2 t = a.target(s);
-        // 0.25 m behind the ball on the goal line, and 0.055 m left of it so the ball lies before the right foot
-        assertEquals(-0.25, t.x(), 1e-9);
+        // 0.22 m behind the ball on the goal line, and 0.055 m left of it so the ball lies before the right foot
+        assertEquals(-0.22, t.x(), 1e-9);
         assertEquals(0.055, t.y(), 1e-9);
         assertEquals(0, t.thetaDeg(), 1e-9);
         Move.Omni m = (Move.Omni) a.decide(s).move();
@@ -30,7 +30,7 @@ class ApproachBallTest {
     void fromTheGoalSideItGoesRoundTheBallNotThroughIt() {
         var s = World.at(1.0, 0.1, 180).ballAt(0, 0).situation();   // between the ball and the goal, facing the ball
         Pose2 t = a.target(s);
-        assertEquals(-0.25, t.x(), 1e-9);
+        assertEquals(-0.22, t.x(), 1e-9);
         assertEquals(0.45, t.y(), 1e-9, "the point beside the ball on the robot's side");
         var below = World.at(1.0, -0.1, 180).ballAt(0, 0).situation();
         assertEquals(-0.45, a.target(below).y(), 1e-9);
@@ -38,8 +38,8 @@ class ApproachBallTest {
 
     @Test
     void atTheSpotFacingTheGoalItIsDoneAndTurnedAwayItTurnsBack() {
-        assertTrue(a.done(World.at(-0.25, 0.055, 3).ballAt(0, 0).situation()));
-        var turned = World.at(-0.25, 0.055, 30).ballAt(0, 0).situation();
+        assertTrue(a.done(World.at(-0.22, 0.055, 3).ballAt(0, 0).situation()));
+        var turned = World.at(-0.22, 0.055, 30).ballAt(0, 0).situation();
         assertFalse(a.done(turned));
         Move.Omni m = (Move.Omni) a.decide(turned).move();
         assertEquals(-1.0, m.turn(), 1e-9, "30 degrees left of the goal: full turn to the right");
