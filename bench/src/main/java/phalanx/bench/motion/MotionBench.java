@@ -27,7 +27,10 @@ import java.util.Map;
  * scripts/motion-bench: one player in a running rcssserver3d, trials set up with the monitor port's
  * trainer commands and measured with the monitor's scene graph (ground truth): forward walk speed,
  * turn rate, kick distance and direction error, get-up success and time, falls, per robot type.
- * Prints a table; the last line is the summary (means over the types).
+ * Prints a table; the last line is the summary (means over the types). A trial the server did not set up
+ * as asked (the robot not where it was moved, the ball not placed, no picture, a robot or ball that never
+ * moved: {@link TrialCheck}) adds no figure; each says why on stderr, the tables count them, and the bench
+ * exits with status 3 when a figure got no measured trial (1 when it cannot run at all, 2 for a bad flag).
  */
 public final class MotionBench {
     private final BenchOptions opt;
@@ -58,12 +61,15 @@ public final class MotionBench {
             System.exit(2);
             return;
         }
+        boolean measured;
         try {
-            new MotionBench(opt, lib).run();
+            measured = new MotionBench(opt, lib).run();
         } catch (IOException | RuntimeException e) {
             System.err.println("motion-bench: " + e.getMessage());
             System.exit(1);
+            return;
         }
+        if (!measured) System.exit(3);
     }
 
     /** Per-type results. */
@@ -81,12 +87,14 @@ public final class MotionBench {
         double walkMinutes;
         final java.util.Map<String, KickStats> kicks = new java.util.LinkedHashMap<>();
         final java.util.Map<String, DiveStats> dives = new java.util.LinkedHashMap<>();
+        /** Per figure (walk, turn_left, a kick or dive motion, getup): trials that measured and that did not, with why. */
+        final Tally tally = new Tally();
     }
 
-    /** One kick motion's trials on one type. */
+    /** One kick motion's trials on one type: {@code tries} of them, the measured ones in the lists. */
     static final class KickStats {
         final List<Double> distance = new ArrayList<>(), dirError = new ArrayList<>();
-        int falls;
+        int falls, tries;
     }
 
     /** One dive motion's trials on one type. */
@@ -95,13 +103,23 @@ public final class MotionBench {
         int stopped, shots;
     }
 
-    private void run() throws IOException {
+    /** False when a figure asked for got no measured trial (the reasons are printed). */
+    private boolean run() throws IOException {
         rig = BenchRig.open(opt.host(), opt.monitorPort(), "motion-bench");
-        trainer("(playMode PlayOn)");
+        String noScene = rig.awaitScene(10_000);
+        if (noScene != null) {
+            rig.close();
+            throw new IOException("no scene from the monitor port " + opt.monitorPort() + ": " + noScene
+                    + " (is it the --server-port of a running rcssserver3d? a server whose monitor port was taken starts without one)");
+        }
+        // no (playMode PlayOn) yet: a server with real time off and no player would run the game clock on to
+        // half time and game over before our player joins; each trial starts play itself (place)
         List<Row> rows = new ArrayList<>();
         for (int type : opt.types()) rows.add(measure(type));
+        System.err.println("motion-bench: " + rig.lagReport());
         rig.close();
         print(rows);
+        return everyFigureMeasured(rows);
     }
 
     private void trainer(String command) throws IOException { rig.trainer(command); }
@@ -111,13 +129,22 @@ public final class MotionBench {
     private double[] ball() { return rig.ball(); }
 
     /**
-     * The ball's place in the latest monitor picture, timed by the picture's number at one picture a cycle
-     * ({@code $monitorStep = 0.02}, as the bench requires): the server's own float clock stops advancing
-     * in a server that ran freely between bench runs (docs/protocol.md).
+     * The ball's place in the latest monitor picture, timed by the picture's game time rounded to whole
+     * cycles ({@link #pictureSeconds}). The server's own float clock stops advancing in a server that ran
+     * freely between bench runs (docs/protocol.md), and counting pictures as cycles doubled every launch
+     * speed on a server with the installed {@code $monitorStep = 0.04} (a picture every other cycle).
      */
     private void sample(BallLaunch launch) {
-        double[] tb = rig.scene(s -> { double[] b = s.ball(); return b == null ? null : new double[] {s.messages() * 0.02, b[0], b[1], b[2]}; });
+        double[] tb = rig.scene(s -> { double[] b = s.ball(); return b == null ? null : new double[] {pictureSeconds(s.time(), s.messages()), b[0], b[1], b[2]}; });
         if (tb != null) launch.add(tb[0], tb[1], tb[2], tb[3]);
+    }
+
+    /**
+     * A picture's time for launch speeds: its game time (the bench resets it to 0 before each trial, so it
+     * is exact) rounded to a whole 0.02 s cycle; without one, the picture's number at one picture a cycle.
+     */
+    static double pictureSeconds(double gameTime, int pictureNumber) {
+        return Double.isNaN(gameTime) ? pictureNumber * 0.02 : Math.round(gameTime / 0.02) * 0.02;
     }
 
     // --- the player -----------------------------------------------------------------------------
@@ -130,8 +157,9 @@ public final class MotionBench {
         for (int t = 0; t < opt.trials(); t++) {
             if (opt.runs("walk")) walk(row);
             if (opt.runs("turn")) {
-                row.turnL.add(turn("turn_left"));
-                row.turnR.add(-turn("turn_right"));
+                double l = turn(row, "turn_left"), r = turn(row, "turn_right");
+                if (!Double.isNaN(l)) row.turnL.add(l);
+                if (!Double.isNaN(r)) row.turnR.add(-r);
             }
             if (opt.runs("kick")) kicks(row);
             if (opt.runs("dive")) dives(row);
@@ -154,6 +182,14 @@ public final class MotionBench {
         last = rig.last();
         controller = new MotionController(library, MotionConfig.DEFAULT);
         hold(25);
+        String joined = rig.joinedAsPlayer1Left();
+        if (joined != null) throw new IOException(joined);
+        String unsynced = rig.syncModeProblem();
+        if (unsynced != null) throw new IOException(unsynced);
+        last = rig.last();
+        cycles++;
+        rig.send("(syn)"); // the answer to the message the check read
+        rig.trackLag();
         trainer("(playMode PlayOn)");
     }
 
@@ -235,9 +271,11 @@ public final class MotionBench {
     /**
      * Trainer move to (x, y) facing +x (the move's angle 0 faces +y, recordings README), then let it
      * stand. The joints are first brought to the walk's start pose wherever the robot is (a move
-     * resets position and orientation, not the joints), so every trial starts alike.
+     * resets position and orientation, not the joints), so every trial starts alike. Null when the robot
+     * stands where it was moved, in PlayOn from game time 0, else why not ({@link TrialCheck#placement}):
+     * then the trial measures nothing.
      */
-    private void place(double x, double y) throws IOException {
+    private String place(double x, double y) throws IOException {
         controller = new MotionController(library, MotionConfig.DEFAULT); // drop whatever was playing
         onceStarted = false;
         double[] ready = readyPose();
@@ -255,8 +293,20 @@ public final class MotionBench {
         // game time back to 0 and play on: no trial runs into the half's end (300 s on a standard server)
         trainer("(time 0)");
         trainer("(playMode PlayOn)");
+        int pictures = rig.pictures();
         hold(50);
         playStopped = false;
+        MonitorScene.Pose p = torso();
+        PlayMode pm = last.gameState() == null ? null : last.gameState().playMode();
+        double gameTime = last.gameState() == null ? Double.NaN : last.gameState().gameTime();
+        return TrialCheck.placement(p == null ? Double.NaN : Math.hypot(p.x() - x, p.y() - y), gameTime, pm, rig.pictures() - pictures,
+                rig.pictureTime() - gameTime);
+    }
+
+    /** A trial that measured nothing: one line saying why, counted for its figure. */
+    private static void notMeasured(Row row, String figure, String why) {
+        row.tally.unmeasured(figure, why);
+        System.err.printf(Locale.ROOT, "  %s: not measured: %s%n", figure, why);
     }
 
     /** The first phase of walk_forward: the crouch every motion starts from. */
@@ -276,12 +326,17 @@ public final class MotionBench {
     }
 
     private void walk(Row row) throws IOException {
-        place(-8, 0);
+        String unplaced = place(-8, 0);
+        if (unplaced != null) {
+            notMeasured(row, "walk", unplaced);
+            return;
+        }
         int n = (int) Math.round(opt.walkSeconds() / 0.02);
         MotionRequest walk = MotionRequest.of("walk_forward");
         for (int i = 0; i < 50; i++) cycle(walk); // start-up, not measured
         MonitorScene.Pose a = torso();
         double t0 = simTime();
+        int pictures = rig.pictures();
         boolean fell = false;
         for (int i = 0; i < n && !fell; i++) {
             cycle(walk);
@@ -289,21 +344,33 @@ public final class MotionBench {
         }
         MonitorScene.Pose b = torso();
         double dt = simTime() - t0;
+        String still = TrialCheck.motion(rig.pictures() - pictures, Math.hypot(b.x() - a.x(), b.y() - a.y()));
+        if (still != null) {
+            notMeasured(row, "walk", still);
+            return;
+        }
         double heading = Math.toRadians(a.yawDeg());
         double along = (b.x() - a.x()) * Math.cos(heading) + (b.y() - a.y()) * Math.sin(heading);
+        row.tally.measured("walk");
         row.walk.add(along / dt);
         row.walkMinutes += dt / 60;
         if (fell) row.falls++;
         for (int i = 0; i < 100 && controller.playing() != null && !fell; i++) cycle(MotionRequest.NONE);
     }
 
-    /** Degrees per second, counter-clockwise positive. */
-    private double turn(String motion) throws IOException {
-        place(-4, 4);
+    /** Degrees per second, counter-clockwise positive; NaN when the trial measured nothing (said why). */
+    private double turn(Row row, String motion) throws IOException {
+        String unplaced = place(-4, 4);
+        if (unplaced != null) {
+            notMeasured(row, motion, unplaced);
+            return Double.NaN;
+        }
         MotionRequest r = MotionRequest.of(motion);
         for (int i = 0; i < 10; i++) cycle(r);
-        double yaw0 = torso().yawDeg(), prev = yaw0, total = 0;
+        MonitorScene.Pose start = torso();
+        double yaw0 = start.yawDeg(), prev = yaw0, total = 0;
         double t0 = simTime();
+        int pictures = rig.pictures();
         int n = (int) Math.round(opt.turnSeconds() / 0.02);
         for (int i = 0; i < n && !fallen(); i++) {
             cycle(r);
@@ -315,6 +382,14 @@ public final class MotionBench {
             prev = y;
         }
         double rate = total / (simTime() - t0);
+        MonitorScene.Pose end = torso();
+        double moved = Math.max(Math.abs(Math.toRadians(total)), Math.hypot(Math.hypot(end.x() - start.x(), end.y() - start.y()), end.z() - start.z()));
+        String still = TrialCheck.motion(rig.pictures() - pictures, moved);
+        if (still != null) {
+            notMeasured(row, motion, still);
+            return Double.NaN;
+        }
+        row.tally.measured(motion);
         boolean fell = fallen();
         System.err.printf(Locale.ROOT, "  %s: %.1f deg/s%s%n", motion, rate, fell ? ", fell (counted as 0)" : "");
         if (fell) getUpQuietly();
@@ -335,28 +410,46 @@ public final class MotionBench {
 
     private boolean onceStarted;
 
-    /** Every kick of {@code --kicks} once; "kick" and "strong_kick" also fill the summary columns. */
+    /**
+     * Every kick of {@code --kicks} once; "kick" and "strong_kick" also fill the summary columns. A kick
+     * that measured nothing ({@link TrialCheck#kick}) adds no figure: its reason is printed and counted.
+     */
     private void kicks(Row row) throws IOException {
         for (String motion : opt.kicks()) {
-            double[] k = kick(motion);
-            for (int again = 0; again < 3 && voided(motion); again++) k = kick(motion);
             KickStats st = row.kicks.computeIfAbsent(motion, m -> new KickStats());
-            st.distance.add(k[0]);
-            st.dirError.add(k[1]);
-            if (k[2] > 0) st.falls++;
-            if (motion.equals("kick")) { row.kick.add(k[0]); row.kickDir.add(k[1]); }
-            if (motion.equals("strong_kick")) { row.strong.add(k[0]); row.strongDir.add(k[1]); }
+            Kick k = kick(motion);
+            for (int again = 0; again < 3 && voided(motion); again++) k = kick(motion);
+            if (playStopped) k = Kick.none("the referee stopped play in each of 4 tries (half time or game over?)");
+            st.tries++;
+            if (k.unmeasured() != null) {
+                notMeasured(row, motion, k.unmeasured());
+                continue;
+            }
+            row.tally.measured(motion);
+            st.distance.add(k.distance());
+            st.dirError.add(k.dirError());
+            if (k.fell()) st.falls++;
+            if (motion.equals("kick")) { row.kick.add(k.distance()); row.kickDir.add(k.dirError()); }
+            if (motion.equals("strong_kick")) { row.strong.add(k.distance()); row.strongDir.add(k.dirError()); }
         }
     }
 
+    /** One kick: what it measured, or (every figure NaN) why it measured nothing. */
+    record Kick(double distance, double dirError, boolean fell, String unmeasured) {
+        static Kick none(String why) { return new Kick(Double.NaN, Double.NaN, false, why); }
+    }
+
     /**
-     * {distance m, direction error deg, 1 if the robot fell} of one kick from a standing start. The
-     * ball lies {@code --ball-ahead} ahead of the torso and {@code --ball-side} to the side of the
+     * One kick from a standing start: the distance, the direction error (deg) and whether the robot fell.
+     * The ball lies {@code --ball-ahead} ahead of the torso and {@code --ball-side} to the side of the
      * kicking foot (right, or left for a motion named *_left). A fall anywhere from the start of the
-     * kick until the ball stops (at least 1 s after the motion ended) counts.
+     * kick until the ball stops (at least 1 s after the motion ended) counts. Measures nothing, with the
+     * reason, when the robot was not where it was moved, the ball not where it was put, no picture came,
+     * the robot in the picture never moved, or the ball never moved.
      */
-    private double[] kick(String motion) throws IOException {
-        place(0, -3);
+    private Kick kick(String motion) throws IOException {
+        String unplaced = place(0, -3);
+        if (unplaced != null) return Kick.none(unplaced);
         MonitorScene.Pose p = torso();
         double h = Math.toRadians(p.yawDeg());
         double side = motion.endsWith("_left") ? -opt.ballSide() : opt.ballSide(); // to the right of the torso
@@ -367,8 +460,12 @@ public final class MotionBench {
         // 1 cm/s when the bench took it as stopped, crept 1-2 cm off the spot before the next swing
         trainer(String.format(Locale.ROOT, "(ball (pos %.3f %.3f 0.042) (vel 0 0 0))", bx, by));
         hold(10);
-        for (int i = 0; i < 100 && Math.hypot(ball()[0] - bx, ball()[1] - by) > 0.01; i++) hold(1); // the monitor may lag
+        for (int i = 0; i < 100 && ballOff(bx, by) > 0.01; i++) hold(1); // settling
         double[] b0 = ball();
+        double ballOffSpot = ballOff(bx, by);
+        if (b0 == null) return Kick.none("no ball in the monitor's scene");
+        int pictures = rig.pictures();
+        KickWatch watch = new KickWatch(rig.scene(s -> s.parts(1, "Left")), b0);
         long done = controller.completions();
         boolean fell = false;
         BallLaunch launch = new BallLaunch();
@@ -376,17 +473,20 @@ public final class MotionBench {
             cycle(onceRequest(motion, false));
             fell |= fallen();
             sample(launch);
+            watch.see(rig.scene(s -> s.parts(1, "Left")), ball());
             if (opt.trace()) traceKick();
         }
         for (int i = 0; i < 25; i++) { // the ball's first half second after the motion, for its launch speed
             hold(1);
             sample(launch);
+            watch.see(rig.scene(s -> s.parts(1, "Left")), ball());
         }
         double[] prev = ball();
         for (int i = 0; i < 400; i++) { // until the ball stops (at most 8 s), the robot standing at least 1 s
             hold(10);
             fell |= fallen();
             double[] b = ball();
+            watch.see(null, b);
             if (i >= 5 && Math.hypot(b[0] - prev[0], b[1] - prev[1]) < 0.002) break;
             prev = b;
         }
@@ -394,12 +494,21 @@ public final class MotionBench {
         double dx = b1[0] - b0[0], dy = b1[1] - b0[1];
         double dist = Math.hypot(dx, dy);
         double err = dist < 0.05 ? Double.NaN : Math.toDegrees(Math.atan2(Math.sin(Math.atan2(dy, dx) - h), Math.cos(Math.atan2(dy, dx) - h)));
-        System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s, launch %.2f m/s, up %.2f m/s%n",
-                motion, dist, err, fell ? ", fell" : "", launch.speed(), launch.up());
+        String why = TrialCheck.kick(ballOffSpot, rig.pictures() - pictures, watch.bodyTravel(), watch.closest(), watch.ballTravel());
+        if (why == null) {
+            System.err.printf(Locale.ROOT, "  %s: %.2f m, direction error %.1f deg%s, launch %.2f m/s, up %.2f m/s, nearest part %.3f m%n",
+                    motion, dist, err, fell ? ", fell" : "", launch.speed(), launch.up(), watch.closest());
+        }
         // A robot moved upright by the trainer straight from lying on its face fell in the next kick before
         // reaching the ball (3 of 3 such trials); getting up first, as a player would, starts the next trial alike.
         if (fell) getUpQuietly();
-        return new double[] {dist, Math.abs(err), fell ? 1 : 0};
+        return why != null ? Kick.none(why) : new Kick(dist, Math.abs(err), fell, null);
+    }
+
+    /** The ball's distance from (x, y) in the latest picture, NaN without a ball. */
+    private double ballOff(double x, double y) {
+        double[] b = ball();
+        return b == null ? Double.NaN : Math.hypot(b[0] - x, b[1] - y);
     }
 
     /**
@@ -450,7 +559,11 @@ public final class MotionBench {
      * torso is upright at 3/4 of standing height. With --getup-walk the walk then starts at full speed.
      */
     private void getUp(Row row, Lying lying, int again) throws IOException {
-        place(4, 4);
+        String unplaced = place(4, 4);
+        if (unplaced != null) {
+            notMeasured(row, "getup", unplaced);
+            return;
+        }
         if (fallen()) {
             // seen twice in long runs: the robot kept lying on its back after every trainer move (its
             // body stuck in the server); a new player is the only way out, and the trial starts afresh
@@ -517,10 +630,12 @@ public final class MotionBench {
         }
         if (again < 3 && voided("getup " + lying)) {
             g.tries--;
+            row.tally.unmeasured("getup", "the referee stopped play during the get-up (measured again)");
             getUpQuietly();
             getUp(row, lying, again + 1);
             return;
         }
+        row.tally.measured("getup");
         boolean ok = stood && !Double.isNaN(upAt);
         boolean walkFell = false;
         if (ok) {
@@ -561,7 +676,7 @@ public final class MotionBench {
     private void dives(Row row) throws IOException {
         for (String motion : List.of("dive_left", "dive_right")) {
             DiveStats st = row.dives.computeIfAbsent(motion, m -> new DiveStats());
-            dive(motion, motion.endsWith("_left") ? 1 : -1, st);
+            dive(row, motion, motion.endsWith("_left") ? 1 : -1, st);
         }
     }
 
@@ -574,9 +689,14 @@ public final class MotionBench {
      * counts as stopped when the ball never gets 0.5 m behind the keeper's start (its goal line when
      * it stands on its spot, AgentConfig.Keeper.spotOffset).
      */
-    private void dive(String motion, int side, DiveStats st) throws IOException {
+    private void dive(Row row, String motion, int side, DiveStats st) throws IOException {
         double x0 = -3, y0 = 3;
-        place(x0, y0);
+        String unplaced = place(x0, y0);
+        if (unplaced != null) {
+            notMeasured(row, motion, unplaced);
+            return;
+        }
+        row.tally.measured(motion);
         MonitorScene.Pose p = torso();
         double startX = p.x(), startY = p.y();
         double distance = 3;
@@ -632,13 +752,17 @@ public final class MotionBench {
     /** The kick and dive tables (only for the trials that ran). */
     private void printKicksAndDives(List<Row> rows) {
         if (rows.stream().anyMatch(r -> !r.kicks.isEmpty())) {
-            System.out.println("type | kick motion      | distance m median / min / mean | dir err deg mean / max | falls");
+            System.out.println("type | kick motion      | distance m median / min / mean | dir err deg mean / max | falls | measured");
             for (Row r : rows)
                 for (var e : r.kicks.entrySet()) {
                     KickStats k = e.getValue();
                     double maxErr = k.dirError.stream().filter(d -> !Double.isNaN(d)).mapToDouble(Double::doubleValue).max().orElse(Double.NaN);
-                    System.out.printf(Locale.ROOT, "%4d | %-16s | %6.2f / %5.2f / %5.2f         | %5.1f / %5.1f          | %d/%d%n", r.type, e.getKey(),
-                            median(k.distance), min(k.distance), mean(k.distance), mean(k.dirError), maxErr, k.falls, k.distance.size());
+                    if (k.distance.isEmpty()) {
+                        System.out.printf(Locale.ROOT, "%4d | %-16s | no kick measured (below)       |                        |       | 0/%d%n", r.type, e.getKey(), k.tries);
+                        continue;
+                    }
+                    System.out.printf(Locale.ROOT, "%4d | %-16s | %6.2f / %5.2f / %5.2f         | %5.1f / %5.1f          | %d/%-3d | %d/%d%n", r.type, e.getKey(),
+                            median(k.distance), min(k.distance), mean(k.distance), mean(k.dirError), maxErr, k.falls, k.distance.size(), k.distance.size(), k.tries);
                 }
         }
         if (rows.stream().anyMatch(r -> !r.dives.isEmpty())) {
@@ -650,6 +774,18 @@ public final class MotionBench {
                             median(d.downSeconds), median(d.reach), min(d.reach), median(d.reachSeconds), d.stopped, d.shots);
                 }
         }
+    }
+
+    /** False, with a line on stderr for each, when some figure got no measured trial (the bench then exits with status 3). */
+    private static boolean everyFigureMeasured(List<Row> rows) {
+        boolean all = true;
+        for (Row r : rows) {
+            for (String f : r.tally.nothingMeasured()) {
+                System.err.printf(Locale.ROOT, "motion-bench: type %d %s: no trial measured anything%n", r.type, f);
+                all = false;
+            }
+        }
+        return all;
     }
 
     private static double max(List<Double> l) { return l.stream().mapToDouble(Double::doubleValue).max().orElse(Double.NaN); }
@@ -685,6 +821,8 @@ public final class MotionBench {
                 }
             }
         }
+        // the trials that measured nothing, with their reasons, before the summary (still the last line)
+        for (Row r : rows) for (String line : r.tally.lines()) System.out.printf(Locale.ROOT, "type %d %s%n", r.type, line);
         int n = rows.size();
         System.out.printf(Locale.ROOT, "walk_mps=%.3f turn_dps=%.1f kick_m=%.2f strong_kick_m=%.2f getup_success=%.2f getup_s=%.2f falls_per_min=%.2f%n",
                 walk / n, turn / n, kick / n, strong / n, tries == 0 ? Double.NaN : (double) ok / tries, getupS / n,

@@ -35,6 +35,18 @@ class MotionBenchTest {
         assertTrue(Double.isNaN(MotionBench.median(List.of())));
     }
 
+    @Test
+    void launchSpeedsAreTimedByGameTimeInWholeCycles() {
+        assertEquals(1.04, MotionBench.pictureSeconds(1.0399, 7), 1e-12);
+        assertEquals(1.04, MotionBench.pictureSeconds(1.041, 7), 1e-12);
+        // two pictures a picture apart with $monitorStep = 0.04 are 0.04 s apart, not 0.02
+        BallLaunch l = new BallLaunch();
+        l.add(MotionBench.pictureSeconds(1.00, 50), 0, 0, 0.042);
+        l.add(MotionBench.pictureSeconds(1.04, 51), 0.32, 0, 0.042);
+        assertEquals(8.0, l.speed(), 1e-9);
+        assertEquals(0.14, MotionBench.pictureSeconds(Double.NaN, 7), 1e-12, "no game time: one picture a cycle");
+    }
+
     private static MonitorScene.Pose pose(double forwardZ) {
         double[] r = new double[9];
         r[7] = forwardZ;
