@@ -72,7 +72,7 @@ public final class BenchRig implements Closeable {
     /**
      * Waits (at most {@code millis} of wall time) for the monitor's first full scene; the reason when none came.
      * A server whose monitor port is another's (it starts without one when the port is taken, silently), or
-     * whose monitor control stopped (docs/protocol.md "Running the server": a float clock past 524,288 s with
+     * whose monitor control stopped (docs/protocol.md "Building and running the server": a float clock past 524,288 s with
      * {@code $monitorStep = 0.04}), sends none.
      */
     public String awaitScene(long millis) {
