@@ -70,7 +70,15 @@ public final class GameStats {
     private long messages, unreadable;
     final double[][] ballCells = new double[30][20];              // PlayOn seconds per 1 m cell, for the heat map
 
-    private record Kick(Side team, double x0, double y0, double dx, double dy) {}
+    private record Kick(Side team, double t0, double x0, double y0, double dx, double dy) {}
+
+    /** One kick as counted: game time, team, from and to (field frame), length. */
+    public record KickEvent(double time, Side team, double x0, double y0, double x1, double y1, double length, boolean onGoal) {}
+
+    private final java.util.List<KickEvent> kickEvents = new java.util.ArrayList<>();
+
+    /** Every kick counted, in order. */
+    public java.util.List<KickEvent> kicks() { return java.util.List.copyOf(kickEvents); }
 
     public GameStats(int players) {
         this.players = players;
@@ -165,7 +173,7 @@ public final class GameStats {
             kick = null;                                  // placed, not kicked
         } else if (kick == null && lastBallSpeed < REST_SPEED && speed > KICK_SPEED) {
             Side kicker = kicker(lastBall);
-            if (kicker != null) kick = new Kick(kicker, lastBall[0], lastBall[1], ball[0] - lastBall[0], ball[1] - lastBall[1]);
+            if (kicker != null) kick = new Kick(kicker, lastTime, lastBall[0], lastBall[1], ball[0] - lastBall[0], ball[1] - lastBall[1]);
         } else if (kick != null && speed < STOP_SPEED) {
             endKick(ball);
         }
@@ -197,9 +205,13 @@ public final class GameStats {
         if (dist > 8) ts.kicksOver8m++;
         if (dist < 1.5) ts.kicksUnder1_5m++;
         double goalX = k.team() == Side.LEFT ? FIELD_HALF_LENGTH : -FIELD_HALF_LENGTH;
-        if (Math.signum(k.dx()) != Math.signum(goalX)) return;
-        double yAtLine = k.y0() + k.dy() * (goalX - k.x0()) / k.dx();
-        if (Math.abs(yAtLine) <= GOAL_HALF_WIDTH && Math.abs(goalX - end[0]) <= SHOT_END_M) ts.shotsOnGoal++;
+        boolean onGoal = false;
+        if (Math.signum(k.dx()) == Math.signum(goalX)) {
+            double yAtLine = k.y0() + k.dy() * (goalX - k.x0()) / k.dx();
+            onGoal = Math.abs(yAtLine) <= GOAL_HALF_WIDTH && Math.abs(goalX - end[0]) <= SHOT_END_M;
+        }
+        if (onGoal) ts.shotsOnGoal++;
+        kickEvents.add(new KickEvent(k.t0(), k.team(), k.x0(), k.y0(), end[0], end[1], dist, onGoal));
     }
 
     /** The machine-readable line of one team. */
@@ -254,16 +266,19 @@ public final class GameStats {
     }
 
     static final String USAGE = """
-            usage: scripts/phalanx stats game MONITOR_LOG [--svg OUT.svg] [--players 11]
+            usage: scripts/phalanx stats game MONITOR_LOG [--svg OUT.svg] [--kicks] [--players 11]
               MONITOR_LOG is a match's monitor.log.gz (scripts/phalanx match records one per match) or any
-              monitor stream saved one message a line; prints one game-stats line per team""";
+              monitor stream saved one message a line; prints one game-stats line per team;
+              --kicks also lists every kick (time, team, from, to, length)""";
 
     public static void main(String[] argv) {
         Path log = null, svg = null;
         int players = 11;
+        boolean listKicks = false;
         try {
-            for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of())) {
+            for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of("--kicks"))) {
                 switch (p[0]) {
+                    case "--kicks" -> listKicks = true;
                     case "--svg" -> svg = Path.of(p[1]);
                     case "--players" -> players = (int) Flags.number(p[0], p[1], 1, 11, true);
                     default -> throw Flags.unknown(p[0], USAGE);
@@ -285,6 +300,12 @@ public final class GameStats {
             }
             System.out.println(g.line(Side.LEFT));
             System.out.println(g.line(Side.RIGHT));
+            if (listKicks) {
+                for (KickEvent k : g.kicks()) {
+                    System.out.println(String.format(Locale.ROOT, "kick t=%.2f %s (%.2f,%.2f) -> (%.2f,%.2f) %.2f m%s", k.time(),
+                            k.team() == Side.LEFT ? "left" : "right", k.x0(), k.y0(), k.x1(), k.y1(), k.length(), k.onGoal() ? " on goal" : ""));
+                }
+            }
             if (g.unreadable() > 0) System.err.println("game-stats: " + g.unreadable() + " of " + g.messages() + " lines were not monitor messages and were skipped");
             if (svg != null) {
                 Files.writeString(svg, g.svg());

@@ -46,6 +46,11 @@ class GameStatsTest {
 
         GameStats.TeamStats us = g.team(Side.LEFT), them = g.team(Side.RIGHT);
         assertEquals(1, us.kicks, g.line(Side.LEFT));
+        GameStats.KickEvent k = g.kicks().get(0);
+        assertEquals(10, k.x0(), 1e-9);
+        assertEquals(15.3, k.x1(), 1e-9);
+        assertEquals(5.3, k.length(), 1e-9);
+        assertTrue(k.onGoal());
         assertEquals(1, us.shotsOnGoal);
         assertEquals(0, us.kicksOver8m);
         assertEquals(0, us.kicksUnder1_5m, "the kick went 5.3 m");

@@ -15,20 +15,25 @@ import phalanx.model.field.Vector2;
  * the omnidirectional walk to the spot behind the ball on the line from the opponent goal's centre
  * through the ball, turning on the way, so the robot arrives facing the goal with the ball in front of
  * its right foot. A robot that is not yet behind the ball goes to a point beside it first, not through it.
+ * The head is {@link Gaze}'s: the ball, or a pan for landmarks when the self belief goes stale.
  */
 public final class ApproachBall implements Action {
     private final AgentConfig config;
     private final AgentConfig.Approach a;
-    private final TrackObject track;
+    private final Gaze gaze;
 
     public ApproachBall(AgentConfig config) {
         this.config = config;
         this.a = config.approach();
-        this.track = TrackObject.ball(config);
+        this.gaze = new Gaze(config);
     }
 
-    /** There is a self pose, a ball and a field to approach by. */
-    public boolean usable(Situation s) { return target(s) != null; }
+    /**
+     * The robot knows where it is (a fresh, confident self belief), the ball and the field: the approach
+     * steers by the self pose, and with a stale one a robot once walked 22 s round the ball and kicked it
+     * toward its own goal (docs/matches.md, session 8).
+     */
+    public boolean usable(Situation s) { return Facts.selfLocalized(s, config) && target(s) != null; }
 
     /**
      * Where to go, own frame, and the heading to arrive with (toward the goal); null without a self pose,
@@ -59,7 +64,7 @@ public final class ApproachBall implements Action {
     public Decision decide(Situation s) {
         Pose2 t = target(s);
         Pose2 self = Facts.self(s, config);
-        if (t == null || self == null) return Decision.of(Move.STAND, track.head(s));
+        if (t == null || self == null) return Decision.of(Move.STAND, gaze.head(s));
         Vector2 d = t.position().minus(self.position()).rotate(-self.thetaDeg());   // body frame
         double dist = d.norm();
         double faceErr = dist > a.faceWayBeyond() ? d.angleDeg() : Angles.difference(t.thetaDeg(), self.thetaDeg());
@@ -68,7 +73,8 @@ public final class ApproachBall implements Action {
         double fwd = dist > 1e-9 ? d.x() / dist * scale : 0, left = dist > 1e-9 ? d.y() / dist * scale : 0;
         // Badly turned, the robot turns first rather than walking sideways across the field.
         if (Math.abs(faceErr) > 60 && dist > a.faceWayBeyond()) { fwd *= 0.2; left *= 0.2; }
-        return Decision.of(new Move.Omni(fwd, left, turn), track.head(s));
+        // The head follows the ball while the self belief is fresh and pans for landmarks when it is not.
+        return Decision.of(new Move.Omni(fwd, left, turn), gaze.head(s));
     }
 
     /** At the spot behind the ball (not the point beside it), facing the goal. */

@@ -62,6 +62,15 @@ class ApproachBallTest {
     }
 
     @Test
+    void aStaleSelfBeliefIsNoGroundToSteerBy() {
+        World w = World.at(-5, 0, 0).ballAt(0, 0);
+        assertTrue(a.usable(w.situation()));
+        w.selfAge = 2;   // seconds since the last fix: the pose is odometry only
+        assertFalse(a.usable(w.situation()));
+        assertInstanceOf(Move.Walk.class, new OnBall(C).decide(w.situation()).move(), "the thesis's Walk To Ball instead");
+    }
+
+    @Test
     void omniSharesAreClampedAndABadNumberStopsThatPart() {
         Move.Omni m = new Move.Omni(2, Double.NaN, -3);
         assertEquals(1, m.forward());
