@@ -17,3 +17,34 @@ if [ ${#need[@]} -gt 0 ]; then
   $SUDO apt-get update -q >/dev/null
   $SUDO apt-get install -y -q "${need[@]}" >/dev/null
 fi
+
+# rcssservermj (MuJoCo server, issue 20) into the project's own virtual environment, pinned, from PyPI:
+# `.venv/bin/rcssservermj`. Skipped with a message when Python >= 3.10 or PyPI is missing: the build and
+# the SimSpark path do not need it; the tests that do skip and say so. PHALANX_NO_MJ=1 skips it too.
+root="$(cd "$(dirname "$0")/.." && pwd)"
+req="$root/scripts/lib/rcssservermj-requirements.txt"
+venv="$root/.venv"
+stamp="$venv/.rcssservermj-requirements"
+if [ "${PHALANX_NO_MJ:-0}" != 1 ] && ! cmp -s "$req" "$stamp" 2>/dev/null; then
+  py=""
+  for c in python3 python3.13 python3.12 python3.11 python3.10; do
+    if command -v "$c" >/dev/null 2>&1 && "$c" -c 'import sys; sys.exit(sys.version_info < (3, 10))' 2>/dev/null; then py="$c"; break; fi
+  done
+  if [ -z "$py" ]; then
+    echo "setup: no Python >= 3.10; rcssservermj not installed (the MJ server tests will skip)" >&2
+  else
+    if ! "$py" -c 'import venv, ensurepip' >/dev/null 2>&1; then
+      # Debian splits venv/ensurepip into python3-venv.
+      echo "setup: installing python3-venv" >&2
+      export DEBIAN_FRONTEND=noninteractive
+      { $SUDO apt-get update -q && $SUDO apt-get install -y -q python3-venv; } >/dev/null 2>&1 || true
+    fi
+    echo "setup: installing rcssservermj into $venv (pinned, from PyPI)" >&2
+    if { [ -x "$venv/bin/pip" ] || "$py" -m venv "$venv"; } \
+       && "$venv/bin/pip" install -q --disable-pip-version-check -r "$req" >&2; then
+      cp "$req" "$stamp"
+    else
+      echo "setup: could not install rcssservermj (no PyPI?); the MJ server tests will skip" >&2
+    fi
+  fi
+fi
