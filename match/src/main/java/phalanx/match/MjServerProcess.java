@@ -1,0 +1,74 @@
+package phalanx.match;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * One rcssservermj (the MuJoCo server, docs/rcssservermj.md) on 127.0.0.1 and its own ports, headless, in
+ * a working folder of its own (it writes console.log into its working directory). Found as users have it:
+ * {@code $PHALANX_RCSSSERVERMJ}, else the project's {@code .venv/bin/rcssservermj} (scripts/setup.sh), else
+ * {@code rcssservermj} on PATH.
+ */
+public final class MjServerProcess {
+    /** {@code realTime = false} lets the server run as fast as sync-mode agents answer. */
+    public record Settings(int agentPort, int monitorPort, boolean sync, boolean realTime) {
+        public Settings {
+            if (agentPort <= 0 || monitorPort <= 0 || agentPort == monitorPort)
+                throw new IllegalArgumentException("agent and monitor ports must be two different positive ports");
+            if (!sync && !realTime)
+                throw new IllegalArgumentException("a server that is neither real-time nor agent-sync runs away from its agents");
+        }
+    }
+
+    private final Settings settings;
+    private final SessionProcess process;
+    private final Path log;
+
+    private MjServerProcess(Settings settings, SessionProcess process, Path log) {
+        this.settings = settings;
+        this.process = process;
+        this.log = log;
+    }
+
+    /** The server executable: the environment variable, the project's venv under {@code projectRoot}, PATH. */
+    public static Optional<Path> find(Map<String, String> env, Path projectRoot) {
+        List<Path> candidates = new ArrayList<>();
+        String set = env.get("PHALANX_RCSSSERVERMJ");
+        if (set != null && !set.isBlank()) return Optional.of(Path.of(set)).filter(Files::isExecutable);
+        candidates.add(projectRoot.resolve(".venv/bin/rcssservermj"));
+        for (String dir : env.getOrDefault("PATH", "").split(":"))
+            if (!dir.isEmpty()) candidates.add(Path.of(dir, "rcssservermj"));
+        return candidates.stream().filter(Files::isExecutable).findFirst();
+    }
+
+    /** The command line: localhost only, no viewer (it needs a display). */
+    public static List<String> command(Path executable, Settings s) {
+        List<String> argv = new ArrayList<>(List.of(executable.toString(), "--host", "127.0.0.1",
+                "--aport", Integer.toString(s.agentPort()), "--mport", Integer.toString(s.monitorPort()), "--no-render"));
+        if (s.sync()) argv.add("--sync");
+        argv.add(s.realTime() ? "--realtime" : "--no-realtime");
+        return argv;
+    }
+
+    /** Starts the server in {@code dir} (output to dir/server.log). */
+    public static MjServerProcess start(Path executable, Settings s, Path dir) throws IOException {
+        if (!ServerProcess.portFree(s.agentPort())) throw new IOException("agent port " + s.agentPort() + " is in use");
+        if (!ServerProcess.portFree(s.monitorPort())) throw new IOException("monitor port " + s.monitorPort() + " is in use");
+        Files.createDirectories(dir);
+        Path log = dir.resolve("server.log");
+        return new MjServerProcess(s, SessionProcess.start(command(executable, s), dir, log, "rcssservermj"), log);
+    }
+
+    public Settings settings() { return settings; }
+    public Path log() { return log; }
+    public long pid() { return process.pid(); }
+    public boolean alive() { return process.anyAlive(); }
+
+    /** SIGINT (its handler shuts the simulation down), SIGKILL after 10 s. */
+    public void stop() { process.stop("INT", 10_000); }
+}

@@ -1,0 +1,107 @@
+package phalanx.match;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+import static org.junit.jupiter.api.Assertions.*;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+class MjServerProcessTest {
+    private static Path executable(Path dir, String name) throws IOException {
+        Files.createDirectories(dir);
+        Path f = dir.resolve(name);
+        Files.writeString(f, "#!/bin/sh\n");
+        Files.setPosixFilePermissions(f, PosixFilePermissions.fromString("rwxr-xr-x"));
+        return f;
+    }
+
+    @Test
+    void findsTheVariableThenTheProjectVenvThenPath(@TempDir Path tmp) throws IOException {
+        Path root = tmp.resolve("project");
+        Path onPath = executable(tmp.resolve("bin"), "rcssservermj");
+        Map<String, String> env = Map.of("PATH", "/nonexistent:" + tmp.resolve("bin"));
+        assertEquals(Optional.of(onPath), MjServerProcess.find(env, root), "PATH when there is no venv");
+        Path venv = executable(root.resolve(".venv/bin"), "rcssservermj");
+        assertEquals(Optional.of(venv), MjServerProcess.find(env, root), "the project's venv before PATH");
+        Path own = executable(tmp.resolve("own"), "server");
+        assertEquals(Optional.of(own), MjServerProcess.find(Map.of("PATH", env.get("PATH"), "PHALANX_RCSSSERVERMJ", own.toString()), root));
+        assertEquals(Optional.empty(), MjServerProcess.find(Map.of("PHALANX_RCSSSERVERMJ", tmp.resolve("missing").toString(), "PATH", env.get("PATH")), root),
+                "a variable naming no executable is not silently replaced by another server");
+        assertEquals(Optional.empty(), MjServerProcess.find(Map.of(), tmp.resolve("elsewhere")));
+    }
+
+    @Test
+    void commandIsLocalHeadlessAndSync() {
+        List<String> argv = MjServerProcess.command(Path.of("/x/rcssservermj"), new MjServerProcess.Settings(3950, 4050, true, false));
+        assertEquals(List.of("/x/rcssservermj", "--host", "127.0.0.1", "--aport", "3950", "--mport", "4050", "--no-render",
+                "--sync", "--no-realtime"), argv);
+        assertThrows(IllegalArgumentException.class, () -> new MjServerProcess.Settings(3950, 4050, false, false));
+        assertThrows(IllegalArgumentException.class, () -> new MjServerProcess.Settings(3950, 3950, true, true));
+    }
+
+    /** Needs the real rcssservermj (scripts/setup.sh installs it into .venv); skips with a message without it. */
+    @Test
+    void realServerAcceptsAT1AndSendsItsPerceptionsEachCycle(@TempDir Path tmp) throws Exception {
+        Optional<Path> exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir")));
+        assumeTrue(exe.isPresent(), "rcssservermj not found ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh");
+        int port = ServerProcess.freePortPair(3950);
+        MjServerProcess server = MjServerProcess.start(exe.get(), new MjServerProcess.Settings(port, port + 100, true, false), tmp);
+        try (Socket s = connect(port, server)) {
+            s.setSoTimeout(20_000);
+            DataOutputStream out = new DataOutputStream(s.getOutputStream());
+            DataInputStream in = new DataInputStream(s.getInputStream());
+            send(out, "(init T1 Phalanx 1)");
+            double last = -1;
+            for (int i = 0; i < 5; i++) {
+                String msg = receive(in);
+                assertTrue(msg.contains("(GS ") && msg.contains("(HJ (n q_llj4)") && msg.contains("(pos (n torso_pos)"), msg);
+                int at = msg.indexOf("(time (now ") + 11;
+                double now = Double.parseDouble(msg.substring(at, msg.indexOf(')', at)));
+                if (last >= 0) assertEquals(0.02, now - last, 1e-6, "one message per 0.02 s cycle");
+                last = now;
+                send(out, "(syn)");
+            }
+        } finally {
+            server.stop();
+        }
+        assertFalse(server.alive(), "stopped by PID");
+    }
+
+    private static Socket connect(int port, MjServerProcess server) throws Exception {
+        long deadline = System.nanoTime() + 60_000_000_000L; // importing MuJoCo and compiling the world takes seconds
+        while (true) {
+            try {
+                return new Socket("127.0.0.1", port);
+            } catch (IOException e) {
+                if (!server.alive()) fail("rcssservermj exited: " + Files.readString(server.log()));
+                if (System.nanoTime() > deadline) throw e;
+                Thread.sleep(200);
+            }
+        }
+    }
+
+    private static void send(DataOutputStream out, String msg) throws IOException {
+        byte[] b = msg.getBytes(StandardCharsets.US_ASCII);
+        out.writeInt(b.length);
+        out.write(b);
+        out.flush();
+    }
+
+    private static String receive(DataInputStream in) throws IOException {
+        byte[] b = new byte[in.readInt()];
+        in.readFully(b);
+        return new String(b, StandardCharsets.US_ASCII);
+    }
+}
