@@ -64,6 +64,20 @@ public final class MjServerProcess {
         return new MjServerProcess(s, SessionProcess.start(command(executable, s), dir, log, "rcssservermj"), log);
     }
 
+    /**
+     * Waits until the server logs "Starting server... DONE!": it listens before its simulation loop runs, and
+     * an agent that connects in between can be dropped (seen on a first start, when Python compiles the package).
+     */
+    public boolean awaitReady(long timeoutMillis) throws IOException, InterruptedException {
+        long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
+        while (System.nanoTime() < deadline) {
+            if (Files.exists(log) && Files.readString(log).contains("Starting server... DONE!")) return true;
+            if (!alive()) return false;
+            Thread.sleep(100);
+        }
+        return false;
+    }
+
     public Settings settings() { return settings; }
     public Path log() { return log; }
     public long pid() { return process.pid(); }

@@ -58,6 +58,8 @@ class MjServerProcessTest {
         assumeTrue(exe.isPresent(), "rcssservermj not found ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh");
         int port = ServerProcess.freePortPair(3950);
         MjServerProcess server = MjServerProcess.start(exe.get(), new MjServerProcess.Settings(port, port + 100, true, false), tmp);
+        // importing MuJoCo and compiling the world takes seconds on a first start
+        assertTrue(server.awaitReady(90_000), () -> "rcssservermj not ready: " + read(server.log()));
         try (Socket s = connect(port, server)) {
             s.setSoTimeout(20_000);
             DataOutputStream out = new DataOutputStream(s.getOutputStream());
@@ -65,7 +67,12 @@ class MjServerProcessTest {
             send(out, "(init T1 Phalanx 1)");
             double last = -1;
             for (int i = 0; i < 5; i++) {
-                String msg = receive(in);
+                String msg;
+                try {
+                    msg = receive(in);
+                } catch (IOException e) {
+                    throw new AssertionError("no perception " + i + " (" + e + "); server log: " + read(server.log()), e);
+                }
                 assertTrue(msg.contains("(GS ") && msg.contains("(HJ (n q_llj4)") && msg.contains("(pos (n torso_pos)"), msg);
                 int at = msg.indexOf("(time (now ") + 11;
                 double now = Double.parseDouble(msg.substring(at, msg.indexOf(')', at)));
@@ -80,7 +87,7 @@ class MjServerProcessTest {
     }
 
     private static Socket connect(int port, MjServerProcess server) throws Exception {
-        long deadline = System.nanoTime() + 60_000_000_000L; // importing MuJoCo and compiling the world takes seconds
+        long deadline = System.nanoTime() + 10_000_000_000L;
         while (true) {
             try {
                 return new Socket("127.0.0.1", port);
@@ -89,6 +96,14 @@ class MjServerProcessTest {
                 if (System.nanoTime() > deadline) throw e;
                 Thread.sleep(200);
             }
+        }
+    }
+
+    private static String read(Path log) {
+        try {
+            return Files.readString(log);
+        } catch (IOException e) {
+            return "(unreadable: " + e + ")";
         }
     }
 
