@@ -42,6 +42,12 @@ public final class T1Model {
         return Math.toDegrees(Math.atan2(r[1][0], r[0][0]));
     }
 
+    /** The torso's roll and pitch in radians (Z-Y-X Euler angles; pitch positive leaning forward). */
+    public static double[] rollPitch(double[] quat) {
+        double[][] r = rotation(quat);
+        return new double[] {Math.atan2(r[2][1], r[2][2]), Math.asin(Math.max(-1, Math.min(1, -r[2][0])))};
+    }
+
     /** The z component of the torso's up axis: 1 upright, 0 lying. */
     public static double uprightness(double[] quat) {
         return rotation(quat)[2][2];

@@ -50,6 +50,9 @@ class T1ModelTest {
         assertEquals(0, T1Model.headingDeg(new double[] {1, 0, 0, 0}), 1e-9);
         assertEquals(1, T1Model.uprightness(new double[] {s, 0, 0, -s}), 1e-9);
         assertEquals(0, T1Model.uprightness(new double[] {s, s, 0, 0}), 1e-9);     // rolled 90 deg: lying on its side
+        assertArrayEquals(new double[] {Math.PI / 2, 0}, T1Model.rollPitch(new double[] {s, s, 0, 0}), 1e-9);
+        double h = Math.toRadians(10) / 2;                                               // 10 deg about y: leaning forward
+        assertArrayEquals(new double[] {0, Math.toRadians(10)}, T1Model.rollPitch(new double[] {Math.cos(h), 0, Math.sin(h), 0}), 1e-9);
     }
 
     @Test
