@@ -39,22 +39,78 @@ public final class LocalizeEval {
     private static final Pattern SCENE = Pattern.compile("\\(scene\\s+\\S*?nao(?:_hetero)?\\.rsg(?:\\s+(\\d+))?\\)");
     private static final Pattern TEAM = Pattern.compile("\\(teamname\\s+([^)\\s]+)\\)");
 
+    /**
+     * One replayed cycle, as the figures see it. {@code k} is the perceptor line (1-based, the README's
+     * message count); {@code believed} and {@code ballBelieved} are in the field frame (null: no belief);
+     * {@code ballInView}: the ball was in a vision frame within the last {@link #BALL_VIEW_SECONDS}.
+     */
+    public record Cycle(int k, GroundTruth.Line truth, boolean fallen, Pose2 believed, Vector2 ballBelieved,
+                        boolean ballInView) {
+        /** Self position error (m), NaN without a belief or a true torso. */
+        public double selfError() {
+            return believed == null || !truth.hasTorso() ? Double.NaN
+                    : Math.hypot(believed.x() - truth.x(), believed.y() - truth.y());
+        }
+        /** Heading error (deg, absolute), NaN without a belief or a true torso. */
+        public double headingError() {
+            return believed == null || !truth.hasTorso() ? Double.NaN
+                    : Math.abs(Angles.difference(believed.thetaDeg(), truth.yawDeg()));
+        }
+        /** Ball position error (m), NaN without a ball belief or a true ball. */
+        public double ballError() {
+            return ballBelieved == null || !truth.hasBall() ? Double.NaN
+                    : Math.hypot(ballBelieved.x() - truth.ballX(), ballBelieved.y() - truth.ballY());
+        }
+        /** Counted in the self and heading figures: a belief, a true torso, upright. */
+        public boolean countsForSelf() { return !fallen && Double.isFinite(selfError()); }
+        /** Counted in the ball figures: a ball belief, a true ball, the ball seen within the last second. */
+        public boolean countsForBall() { return ballInView && Double.isFinite(ballError()); }
+    }
+
+    /** The ball figures count a cycle only if a vision frame showed the ball within this many seconds. */
+    public static final double BALL_VIEW_SECONDS = 1.0;
+
     /** The errors of one or more recordings. */
     public static final class Result {
         final String name;
+        /** self and theta: upright cycles; ball: cycles with the ball in view in the last second; ballAll: every cycle with a ball belief. */
         final List<Double> self = new ArrayList<>(), theta = new ArrayList<>(), ball = new ArrayList<>(),
-                fallenSelf = new ArrayList<>();
-        long cycles, malformed, fallenCycles, vision, fixes;
+                ballAll = new ArrayList<>(), fallenSelf = new ArrayList<>();
+        final List<Cycle> cycleLog = new ArrayList<>();
+        long cycles, malformed, fallenCycles, vision, fixes, selfOver1m;
         final List<BeliefStats> stats = new ArrayList<>();
 
         Result(String name) { this.name = name; }
 
-        void add(Result r) {
-            self.addAll(r.self); theta.addAll(r.theta); ball.addAll(r.ball); fallenSelf.addAll(r.fallenSelf);
-            cycles += r.cycles; malformed += r.malformed; fallenCycles += r.fallenCycles;
-            vision += r.vision; fixes += r.fixes; stats.addAll(r.stats);
+        /** Counts one cycle (the replay calls this once per perceptor line that parsed). */
+        void observe(Cycle c) {
+            cycleLog.add(c);
+            if (c.fallen()) fallenCycles++;
+            double e = c.selfError();
+            if (Double.isFinite(e)) {
+                if (c.fallen()) fallenSelf.add(e);
+                else {
+                    self.add(e);
+                    theta.add(c.headingError());
+                    if (e > 1.0) selfOver1m++;
+                }
+            }
+            double be = c.ballError();
+            if (Double.isFinite(be)) {
+                ballAll.add(be);
+                if (c.ballInView()) ball.add(be);
+            }
         }
 
+        void add(Result r) {
+            self.addAll(r.self); theta.addAll(r.theta); ball.addAll(r.ball); ballAll.addAll(r.ballAll);
+            fallenSelf.addAll(r.fallenSelf);
+            cycles += r.cycles; malformed += r.malformed; fallenCycles += r.fallenCycles;
+            vision += r.vision; fixes += r.fixes; selfOver1m += r.selfOver1m; stats.addAll(r.stats);
+        }
+
+        public String name() { return name; }
+        public long cycles() { return cycles; }
         public double selfMedian() { return quantile(self, 0.5); }
         public double selfP95() { return quantile(self, 0.95); }
         public double selfMax() { return quantile(self, 1.0); }
@@ -62,10 +118,58 @@ public final class LocalizeEval {
         public double thetaP95() { return quantile(theta, 0.95); }
         public double ballMedian() { return quantile(ball, 0.5); }
         public double ballP95() { return quantile(ball, 0.95); }
+        public double ballMax() { return quantile(ball, 1.0); }
         public double fixRate() { return vision == 0 ? 0 : (double) fixes / vision; }
         public int selfSamples() { return self.size(); }
         public int ballSamples() { return ball.size(); }
+        /** Upright cycles whose self error is above 1 m. */
+        public long selfOver1m() { return selfOver1m; }
         public List<BeliefStats> stats() { return stats; }
+        /** Every cycle of a single recording, in order (empty for a pooled result). */
+        public List<Cycle> cycleLog() { return cycleLog; }
+
+        /** The n counted cycles with the largest self error (ball: the largest ball error), worst first. */
+        public List<Cycle> worst(int n, boolean byBall) {
+            return cycleLog.stream().filter(byBall ? Cycle::countsForBall : Cycle::countsForSelf)
+                    .sorted(java.util.Comparator.comparingDouble((Cycle c) -> byBall ? c.ballError() : c.selfError()).reversed())
+                    .limit(n).toList();
+        }
+    }
+
+    /**
+     * The per-recording limits of issue 19: a recording at or above any of them is named in a
+     * "breaks:" line. A figure that is NaN (no cycle counted) breaks nothing.
+     */
+    public record Limits(double selfP95, double selfMax, double headingP95Deg, double ballMedian, double ballP95) {
+        public static final Limits ISSUE_19 = new Limits(0.3, 1.5, 10, 0.15, 0.6);
+
+        /** The broken limits, in this order: self_p95, self_max, heading_p95, ball_median, ball_p95. */
+        public List<String> broken(Result r) {
+            List<String> out = new ArrayList<>();
+            if (r.selfP95() >= selfP95) out.add("self_p95");
+            if (r.selfMax() >= selfMax) out.add("self_max");
+            if (r.thetaP95() >= headingP95Deg) out.add("heading_p95");
+            if (r.ballMedian() >= ballMedian) out.add("ball_median");
+            if (r.ballP95() >= ballP95) out.add("ball_p95");
+            return out;
+        }
+
+        /** "self_max 3.964 >= 1.5 m, ..." for the broken limits. */
+        public String describe(Result r) {
+            List<String> parts = new ArrayList<>();
+            for (String b : broken(r)) {
+                parts.add(switch (b) {
+                    case "self_p95" -> String.format(Locale.ROOT, "self_p95 %.3f >= %s m", r.selfP95(), num(selfP95));
+                    case "self_max" -> String.format(Locale.ROOT, "self_max %.3f >= %s m", r.selfMax(), num(selfMax));
+                    case "heading_p95" -> String.format(Locale.ROOT, "heading_p95 %.2f >= %s deg", r.thetaP95(), num(headingP95Deg));
+                    case "ball_median" -> String.format(Locale.ROOT, "ball_median %.3f >= %s m", r.ballMedian(), num(ballMedian));
+                    default -> String.format(Locale.ROOT, "ball_p95 %.3f >= %s m", r.ballP95(), num(ballP95));
+                });
+            }
+            return String.join(", ", parts);
+        }
+
+        private static String num(double v) { return v == Math.rint(v) ? String.valueOf((long) v) : String.valueOf(v); }
     }
 
     /** Replays one recording (path prefix) with the given config. */
@@ -88,6 +192,7 @@ public final class LocalizeEval {
         PerceptionParser parser = new PerceptionParser();
         Result r = new Result(prefix.getFileName().toString());
         int n = Math.min(perceptors.size(), truth.size());
+        double ballSeenAt = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < n; i++) {
             r.cycles++;
             Perception p;
@@ -99,21 +204,12 @@ public final class LocalizeEval {
             }
             WorldBelief b = store.update(p);
             GroundTruth.Line g = truth.get(i);
+            double now = Double.isFinite(p.time()) ? p.time() : g.now();
+            if (p.hasVision() && p.vision().ball() != null) ballSeenAt = now;
             boolean fallen = g.hasTorso() && g.fallen();
-            if (fallen) r.fallenCycles++;
-            if (b.self() != null && g.hasTorso()) {
-                Pose2 f = toField(b.self(), b.side());
-                double err = Math.hypot(f.x() - g.x(), f.y() - g.y());
-                if (fallen) r.fallenSelf.add(err);
-                else {
-                    r.self.add(err);
-                    r.theta.add(Math.abs(Angles.difference(f.thetaDeg(), g.yawDeg())));
-                }
-            }
-            if (b.ballGlobal() != null && g.hasBall()) {
-                Vector2 ball = b.side() == Side.RIGHT ? b.ballGlobal().times(-1) : b.ballGlobal();
-                r.ball.add(Math.hypot(ball.x() - g.ballX(), ball.y() - g.ballY()));
-            }
+            Pose2 self = b.self() == null ? null : toField(b.self(), b.side());
+            Vector2 ball = b.ballGlobal() == null ? null : b.side() == Side.RIGHT ? b.ballGlobal().times(-1) : b.ballGlobal();
+            r.observe(new Cycle(i + 1, g, fallen, self, ball, now - ballSeenAt <= BALL_VIEW_SECONDS + 1e-9));
         }
         r.vision = store.stats().visionFrames();
         r.fixes = store.stats().selfFixes();
@@ -142,7 +238,8 @@ public final class LocalizeEval {
     /** The command line; returns the exit status. */
     public static int run(String[] args, PrintStream out, PrintStream err) {
         LocalizationConfig config = LocalizationConfig.DEFAULT;
-        boolean compare = false;
+        boolean compare = false, tsv = false, detail = false, oneFilter = false;
+        int worst = 0;
         List<Path> recordings = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
@@ -152,13 +249,21 @@ public final class LocalizeEval {
                     String f = args[++i].toUpperCase(Locale.ROOT);
                     try { config = config.withFilter(LocalizationConfig.Filter.valueOf(f)); }
                     catch (IllegalArgumentException e) { return usage(err, "unknown filter '" + args[i] + "' (fifo or ekf)"); }
+                    oneFilter = true;
                 }
                 case "--pairs" -> {
                     if (i + 1 >= args.length) return usage(err, "--pairs needs equal or geometry");
                     try { config = config.withPairWeighting(LocalizationConfig.PairWeighting.valueOf(args[++i].toUpperCase(Locale.ROOT))); }
                     catch (IllegalArgumentException e) { return usage(err, "unknown pair weighting '" + args[i] + "' (equal or geometry)"); }
                 }
+                case "--worst" -> {
+                    if (i + 1 >= args.length) return usage(err, "--worst needs a number of cycles");
+                    try { worst = Integer.parseInt(args[++i]); } catch (NumberFormatException e) { worst = -1; }
+                    if (worst < 0) return usage(err, "--worst needs a number of cycles >= 0, not '" + args[i] + "'");
+                }
                 case "--compare" -> compare = true;
+                case "--tsv" -> tsv = true;
+                case "--detail" -> detail = true;
                 case "-h", "--help" -> { usage(out, null); return 0; }
                 default -> {
                     if (a.startsWith("-")) return usage(err, "unknown option '" + a + "'");
@@ -179,7 +284,7 @@ public final class LocalizeEval {
                 for (LocalizationConfig.Filter f : LocalizationConfig.Filter.values()) {
                     for (LocalizationConfig.PairWeighting w : LocalizationConfig.PairWeighting.values()) {
                         LocalizationConfig c = config.withFilter(f).withPairWeighting(w);
-                        Result all = runAll(recordings, c, null);
+                        Result all = pooled(runEach(recordings, c));
                         out.printf(Locale.ROOT, "%-9s %-9s %8.3f  %8.3f  %8.3f  %9.2f  %9.2f  %8.3f  %8.3f  %8.3f%n",
                                 f.name().toLowerCase(Locale.ROOT), w.name().toLowerCase(Locale.ROOT),
                                 all.selfMedian(), all.selfP95(), all.selfMax(), all.thetaMedian(), all.thetaP95(),
@@ -190,10 +295,30 @@ public final class LocalizeEval {
                 out.println("(the summary below is the configured filter: " + config.filter().name().toLowerCase(Locale.ROOT)
                         + ", " + config.pairWeighting().name().toLowerCase(Locale.ROOT) + ")");
                 summary(out, def);
-            } else {
-                out.println("filter=" + config.filter().name().toLowerCase(Locale.ROOT)
-                        + " pairs=" + config.pairWeighting().name().toLowerCase(Locale.ROOT));
-                summary(out, runAll(recordings, config, out));
+                return 0;
+            }
+            List<LocalizationConfig.Filter> filters = oneFilter ? List.of(config.filter())
+                    : List.of(LocalizationConfig.Filter.values());
+            if (tsv) out.println(String.join("\t", TSV_HEADER));
+            Result def = null;
+            for (LocalizationConfig.Filter f : filters) {
+                LocalizationConfig c = config.withFilter(f);
+                List<Result> each = runEach(recordings, c);
+                Result all = pooled(each);
+                if (f == config.filter()) def = all;
+                String label = f.name().toLowerCase(Locale.ROOT) + "/" + c.pairWeighting().name().toLowerCase(Locale.ROOT);
+                if (tsv) {
+                    for (Result r : each) out.println(tsvRow(label, r));
+                    out.println(tsvRow(label, all));
+                    continue;
+                }
+                table(out, label, each, all, Limits.ISSUE_19, worst);
+                if (detail) for (Result r : each) detail(out, r);
+            }
+            if (!tsv) {
+                out.println("(summary: " + config.filter().name().toLowerCase(Locale.ROOT) + ", "
+                        + config.pairWeighting().name().toLowerCase(Locale.ROOT) + ", all recordings pooled)");
+                summary(out, def);
             }
         } catch (IOException e) {
             err.println("localize-eval: " + e.getMessage());
@@ -202,32 +327,100 @@ public final class LocalizeEval {
         return 0;
     }
 
-    private static Result runAll(List<Path> recordings, LocalizationConfig config, PrintStream out) throws IOException {
-        Result all = new Result("overall");
-        for (Path p : recordings) {
-            Result r = run(p, config);
-            if (out != null) print(out, r);
-            all.add(r);
-        }
-        if (out != null) print(out, all);
+    /** Replays each recording on its own. */
+    static List<Result> runEach(List<Path> recordings, LocalizationConfig config) throws IOException {
+        List<Result> out = new ArrayList<>();
+        for (Path p : recordings) out.add(run(p, config));
+        return out;
+    }
+
+    /** All recordings' errors in one (the "pooled" line). */
+    static Result pooled(List<Result> each) {
+        Result all = new Result("pooled");
+        for (Result r : each) all.add(r);
         return all;
     }
 
-    private static void print(PrintStream out, Result r) {
-        out.printf(Locale.ROOT, "%-10s self median %.3f p95 %.3f max %.3f m (%d cycles) | theta median %.2f p95 %.2f deg"
-                        + " | ball median %.3f p95 %.3f m (%d cycles) | fix_rate %.3f (%d/%d vision frames)%n",
-                r.name, r.selfMedian(), r.selfP95(), r.selfMax(), r.self.size(), r.thetaMedian(), r.thetaP95(),
-                r.ballMedian(), r.ballP95(), r.ball.size(), r.fixRate(), r.fixes, r.vision);
+    static final String TABLE_HEADER = String.format(Locale.ROOT, "%-10s %6s %6s %8s %8s %8s %8s %6s %8s %8s %8s %8s %7s",
+            "recording", "cycles", "self_n", "self_med", "self_p95", "self_max", "hdg_p95", "ball_n", "ball_med",
+            "ball_p95", "ball_max", "fix_rate", "self>1m");
+
+    /** One table line: metres, heading in degrees; ball over cycles with the ball in view in the last second. */
+    static String row(Result r) {
+        return String.format(Locale.ROOT, "%-10s %6d %6d %8.3f %8.3f %8.3f %8.2f %6d %8.3f %8.3f %8.3f %8.3f %7d",
+                r.name, r.cycles, r.self.size(), r.selfMedian(), r.selfP95(), r.selfMax(), r.thetaP95(),
+                r.ball.size(), r.ballMedian(), r.ballP95(), r.ballMax(), r.fixRate(), r.selfOver1m);
+    }
+
+    /** One filter's block: header, one line per recording, the pooled line, the breaks, the worst cycles. */
+    static void table(PrintStream out, String label, List<Result> each, Result all, Limits limits, int worst) {
+        out.println("filter " + label + "  (m, heading deg; ball only over cycles with the ball seen in the last "
+                + num1(BALL_VIEW_SECONDS) + " s; limits: self_p95 < " + limits.selfP95() + ", self_max < " + limits.selfMax()
+                + ", heading_p95 < " + limits.headingP95Deg() + ", ball_median < " + limits.ballMedian()
+                + ", ball_p95 < " + limits.ballP95() + ")");
+        out.println(TABLE_HEADER);
+        for (Result r : each) out.println(row(r));
+        out.println(row(all));
+        boolean any = false;
+        for (Result r : each) {
+            if (limits.broken(r).isEmpty()) continue;
+            any = true;
+            out.println("breaks: " + r.name + ": " + limits.describe(r));
+        }
+        if (!any) out.println("breaks: none");
+        if (worst <= 0) return;
+        for (Result r : each) {
+            List<String> b = limits.broken(r);
+            if (b.isEmpty()) continue;
+            boolean selfBroken = b.stream().anyMatch(x -> !x.startsWith("ball"));
+            boolean ballBroken = b.stream().anyMatch(x -> x.startsWith("ball"));
+            if (selfBroken) worstCycles(out, r, worst, false);
+            if (ballBroken) worstCycles(out, r, worst, true);
+        }
+    }
+
+    /** The worst cycles of one recording: cycle k (perceptor line), time, true and believed pose (field frame) and ball. */
+    static void worstCycles(PrintStream out, Result r, int n, boolean byBall) {
+        out.println("worst " + n + " cycles of " + r.name + " by " + (byBall ? "ball" : "self") + " error"
+                + " (k = perceptor line; pose x y yaw_deg, field frame):");
+        for (Cycle c : r.worst(n, byBall)) {
+            GroundTruth.Line g = c.truth();
+            Pose2 s = c.believed();
+            out.printf(Locale.ROOT, "  k=%4d now %6.2f  true (%7.3f %7.3f %7.1f) believed %s  self %.3f m hdg %.1f deg"
+                            + " | ball true (%7.3f %7.3f) believed %s err %.3f m%n",
+                    c.k(), g.now(), g.x(), g.y(), g.yawDeg(),
+                    s == null ? "(none)" : String.format(Locale.ROOT, "(%7.3f %7.3f %7.1f)", s.x(), s.y(), s.thetaDeg()),
+                    c.selfError(), c.headingError(), g.ballX(), g.ballY(),
+                    c.ballBelieved() == null ? "(none)" : String.format(Locale.ROOT, "(%7.3f %7.3f)", c.ballBelieved().x(), c.ballBelieved().y()),
+                    c.ballError());
+        }
+    }
+
+    static final String[] TSV_HEADER = {"filter", "recording", "cycles", "self_n", "self_median_m", "self_p95_m", "self_max_m",
+            "heading_p95_deg", "ball_n", "ball_median_m", "ball_p95_m", "ball_max_m", "fix_rate", "self_over_1m", "breaks"};
+
+    static String tsvRow(String label, Result r) {
+        List<String> b = Limits.ISSUE_19.broken(r);
+        return String.join("\t", label, r.name, Long.toString(r.cycles), Integer.toString(r.self.size()),
+                f3(r.selfMedian()), f3(r.selfP95()), f3(r.selfMax()), String.format(Locale.ROOT, "%.2f", r.thetaP95()),
+                Integer.toString(r.ball.size()), f3(r.ballMedian()), f3(r.ballP95()), f3(r.ballMax()), f3(r.fixRate()),
+                Long.toString(r.selfOver1m), b.isEmpty() ? "-" : String.join(",", b));
+    }
+
+    private static String f3(double v) { return String.format(Locale.ROOT, "%.3f", v); }
+    private static String num1(double v) { return String.format(Locale.ROOT, "%.1f", v); }
+
+    private static void detail(PrintStream out, Result r) {
         long noVision = 0, none = 0, one = 0, bad = 0, noId = 0, fallenFrames = 0;
         for (BeliefStats s : r.stats) {
             noVision += s.noVision(); none += s.noLandmark(); one += s.oneLandmark(); bad += s.badPolar();
             noId += s.playerWithoutId(); fallenFrames += s.fallenFrames();
         }
-        out.printf(Locale.ROOT, "%-10s   skipped: no_vision=%d no_landmark=%d one_landmark=%d bad_distance=%d"
+        out.printf(Locale.ROOT, "%-10s skipped: no_vision=%d no_landmark=%d one_landmark=%d bad_distance=%d"
                         + " player_without_id=%d malformed=%d | fallen: %d cycles (torso > 45 deg), %d vision frames skipped (falling, down or shaken),"
-                        + " self error while down median %.3f m (%d cycles, not in the figures above)%n",
-                "", noVision, none, one, bad, noId, r.malformed, r.fallenCycles, fallenFrames,
-                quantile(r.fallenSelf, 0.5), r.fallenSelf.size());
+                        + " self error while down median %.3f m (%d cycles, not in the figures above) | ball over every cycle with a belief: median %.3f p95 %.3f m (%d cycles)%n",
+                r.name, noVision, none, one, bad, noId, r.malformed, r.fallenCycles, fallenFrames,
+                quantile(r.fallenSelf, 0.5), r.fallenSelf.size(), quantile(r.ballAll, 0.5), quantile(r.ballAll, 0.95), r.ballAll.size());
     }
 
     private static void summary(PrintStream out, Result r) {
@@ -237,8 +430,11 @@ public final class LocalizeEval {
 
     private static int usage(PrintStream s, String problem) {
         if (problem != null) s.println("localize-eval: " + problem);
-        s.println("usage: scripts/phalanx bench localize [--filter fifo|ekf] [--pairs equal|geometry] [--compare] <recording>...");
+        s.println("usage: scripts/phalanx bench localize [--filter fifo|ekf] [--pairs equal|geometry] [--worst N] [--tsv] [--detail] [--compare] <recording>...");
         s.println("  a recording is a path prefix such as ../shared/recordings/S1 (needs X_perceptors.txt and X_groundtruth.txt)");
+        s.println("  default: one block per filter (fifo, ekf): a line per recording, the pooled line, the recordings that break");
+        s.println("  issue 19's limits; --filter runs one; --worst N prints the N worst cycles of each breaking recording;");
+        s.println("  --tsv the same figures tab-separated; --detail the skip counters; --compare the pooled figures of all four choices");
         return 2;
     }
 }

@@ -1,0 +1,198 @@
+package phalanx.bench.localize;
+
+import org.junit.jupiter.api.Test;
+import phalanx.comm.recording.GroundTruth;
+import phalanx.comm.recording.Recordings;
+import phalanx.localization.LocalizationConfig;
+import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+/**
+ * Issue 19: one line per recording, the limits each recording breaks. The statistics and the limit
+ * check on synthetic cycles whose figures are computed by hand; the table over the real recordings
+ * (skipped with a message when ../shared/recordings is missing).
+ */
+class LocalizeEvalPerRecordingTest {
+    private static final double[] UPRIGHT = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    private static final double[] LYING = {1, 0, 0, 0, 0, 1, 0, -1, 0};
+
+    /** Truth: torso at the origin facing 0°, ball at the origin; the belief is off by the given errors along +x. */
+    private static LocalizeEval.Cycle cycle(int k, boolean fallen, double selfErr, double headingErr, double ballErr, boolean inView) {
+        GroundTruth.Line g = new GroundTruth.Line(0.02 * k, 0, 0, 0.38, fallen ? LYING : UPRIGHT, 0, 0, 0, 0.04);
+        return new LocalizeEval.Cycle(k, g, fallen, new Pose2(selfErr, 0, headingErr), new Vector2(ballErr, 0), inView);
+    }
+
+    /**
+     * 20 upright cycles: self errors 0.01 ... 0.19 m and one of 2.0 m, heading errors 1° ... 20°, ball
+     * errors 0.02 ... 0.40 m with only the even cycles' ball in view; one fallen cycle with a 5 m self error.
+     * By hand (nearest rank, index ceil(q n) - 1): self median = 10th = 0.10, p95 = 19th = 0.19, max 2.0;
+     * heading p95 = 19°; ball over the 10 in-view cycles 0.04, 0.08, ..., 0.40: median = 5th = 0.20,
+     * p95 = 10th = 0.40, max 0.40; one cycle above 1 m.
+     */
+    private static LocalizeEval.Result synthetic() {
+        LocalizeEval.Result r = new LocalizeEval.Result("SYN");
+        for (int i = 1; i <= 20; i++) {
+            r.cycles++;
+            r.observe(cycle(i, false, i == 20 ? 2.0 : 0.01 * i, i, 0.02 * i, i % 2 == 0));
+        }
+        r.cycles++;
+        r.observe(cycle(21, true, 5.0, 90, 0.01, false));
+        r.vision = 7;
+        r.fixes = 5;
+        return r;
+    }
+
+    @Test
+    void perRecordingStatisticsByHand() {
+        LocalizeEval.Result r = synthetic();
+        assertEquals(20, r.selfSamples(), "the fallen cycle is left out of the self figures");
+        assertEquals(0.10, r.selfMedian(), 1e-12);
+        assertEquals(0.19, r.selfP95(), 1e-12);
+        assertEquals(2.0, r.selfMax(), 1e-12);
+        assertEquals(19.0, r.thetaP95(), 1e-9);
+        assertEquals(10, r.ballSamples(), "only cycles with the ball in view in the last second");
+        assertEquals(0.20, r.ballMedian(), 1e-12);
+        assertEquals(0.40, r.ballP95(), 1e-12);
+        assertEquals(0.40, r.ballMax(), 1e-12);
+        assertEquals(1, r.selfOver1m());
+        assertEquals(5.0 / 7, r.fixRate(), 1e-12);
+        assertEquals(21, r.cycles());
+
+        String row = LocalizeEval.row(r);
+        assertEquals(List.of("SYN", "21", "20", "0.100", "0.190", "2.000", "19.00", "10", "0.200", "0.400", "0.400", "0.714", "1"),
+                Arrays.asList(row.trim().split("\\s+")), row);
+        assertEquals(LocalizeEval.TABLE_HEADER.trim().split("\\s+").length, row.trim().split("\\s+").length, "one column per header");
+
+        List<LocalizeEval.Cycle> worst = r.worst(3, false);
+        assertEquals(List.of(20, 19, 18), worst.stream().map(LocalizeEval.Cycle::k).toList(), "worst self cycles, fallen one excluded");
+        assertEquals(List.of(20, 18, 16), r.worst(3, true).stream().map(LocalizeEval.Cycle::k).toList(), "worst ball cycles in view");
+    }
+
+    @Test
+    void pooledLineCountsEveryRecordingsCycles() {
+        LocalizeEval.Result a = synthetic(), b = new LocalizeEval.Result("B");
+        b.cycles = 1;
+        b.observe(cycle(1, false, 3.0, 0, 0.5, true));
+        LocalizeEval.Result all = LocalizeEval.pooled(List.of(a, b));
+        assertEquals(22, all.cycles());
+        assertEquals(21, all.selfSamples());
+        assertEquals(3.0, all.selfMax(), 1e-12);
+        assertEquals(2, all.selfOver1m());
+        assertEquals(11, all.ballSamples());
+    }
+
+    @Test
+    void theLimitCheckNamesExactlyTheBrokenLimits() {
+        LocalizeEval.Limits lim = LocalizeEval.Limits.ISSUE_19;
+        // synthetic(): self p95 0.19 < 0.3, max 2.0 >= 1.5, heading p95 19 >= 10, ball median 0.20 >= 0.15, p95 0.40 < 0.6
+        LocalizeEval.Result r = synthetic();
+        assertEquals(List.of("self_max", "heading_p95", "ball_median"), lim.broken(r));
+        assertEquals("self_max 2.000 >= 1.5 m, heading_p95 19.00 >= 10 deg, ball_median 0.200 >= 0.15 m", lim.describe(r));
+
+        LocalizeEval.Result clean = new LocalizeEval.Result("CLEAN");
+        for (int i = 1; i <= 20; i++) clean.observe(cycle(i, false, 0.29, 9.9, 0.14, true));
+        assertEquals(List.of(), lim.broken(clean), "just under every limit");
+
+        LocalizeEval.Result at = new LocalizeEval.Result("AT");
+        for (int i = 1; i <= 20; i++) at.observe(cycle(i, false, i == 20 ? 1.5 : 0.3, 10, i >= 19 ? 0.6 : 0.15, true));
+        assertEquals(List.of("self_p95", "self_max", "heading_p95", "ball_median", "ball_p95"), lim.broken(at), "a limit reached is broken");
+
+        LocalizeEval.Result ballOnly = new LocalizeEval.Result("BALL");
+        for (int i = 1; i <= 20; i++) ballOnly.observe(cycle(i, false, 0.01, 0.1, i == 20 ? 9.0 : 0.01, true));
+        assertEquals(List.of(), lim.broken(ballOnly), "one bad ball cycle in 20 is above the p95");
+        ballOnly.observe(cycle(21, false, 0.01, 0.1, 9.0, true));
+        assertEquals(List.of("ball_p95"), lim.broken(ballOnly), "two in 21 are not");
+
+        LocalizeEval.Result unseen = new LocalizeEval.Result("UNSEEN");
+        for (int i = 1; i <= 20; i++) unseen.observe(cycle(i, false, 0.01, 0.1, 9.0, false));
+        assertEquals(0, unseen.ballSamples());
+        assertEquals(List.of(), lim.broken(unseen), "a ball never in view is not counted, and NaN breaks nothing");
+    }
+
+    @Test
+    void aBadWorstCountGetsAClearMessage() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8), o = new PrintStream(new ByteArrayOutputStream());
+        assertEquals(2, LocalizeEval.run(new String[] {"--worst", "many"}, o, e));
+        assertTrue(err.toString(StandardCharsets.UTF_8).contains("--worst needs a number of cycles >= 0, not 'many'"), err.toString(StandardCharsets.UTF_8));
+    }
+
+    private static List<Path> recordingsWithTruth() throws IOException {
+        List<Path> out = new ArrayList<>();
+        for (Path p : Recordings.all()) if (Files.isRegularFile(Recordings.groundTruthFile(p))) out.add(p);
+        return out;
+    }
+
+    private static String run(String... a) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+        int rc = LocalizeEval.run(a, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+        assertEquals(0, rc, err.toString(StandardCharsets.UTF_8));
+        return out.toString(StandardCharsets.UTF_8);
+    }
+
+    @Test
+    void theRealRecordingsGetALineEachPerFilterAndTheirBreaks() throws IOException {
+        assumeTrue(Recordings.dir().isPresent(), Recordings.missingMessage());
+        List<Path> recs = recordingsWithTruth();
+        assertTrue(recs.size() >= 8, "recordings with ground truth: " + recs);
+        String[] args = recs.stream().map(Path::toString).toArray(String[]::new);
+        List<String> lines = Arrays.asList(run(args).split("\n"));
+        for (LocalizationConfig.Filter f : LocalizationConfig.Filter.values()) {
+            String label = f.name().toLowerCase(java.util.Locale.ROOT) + "/geometry";
+            int start = -1;
+            for (int i = 0; i < lines.size(); i++) if (lines.get(i).startsWith("filter " + label + " ")) start = i;
+            assertTrue(start >= 0, "a block for " + label + " in\n" + String.join("\n", lines));
+            assertEquals(LocalizeEval.TABLE_HEADER, lines.get(start + 1));
+            List<LocalizeEval.Result> each = LocalizeEval.runEach(recs, LocalizationConfig.DEFAULT.withFilter(f));
+            for (int i = 0; i < recs.size(); i++) {
+                assertEquals(LocalizeEval.row(each.get(i)), lines.get(start + 2 + i), "line of " + recs.get(i).getFileName());
+                assertTrue(lines.get(start + 2 + i).startsWith(recs.get(i).getFileName() + " "));
+            }
+            assertTrue(lines.get(start + 2 + recs.size()).startsWith("pooled "), "pooled line last");
+            List<String> expected = new ArrayList<>();
+            for (LocalizeEval.Result r : each) {
+                if (LocalizeEval.Limits.ISSUE_19.broken(r).isEmpty()) continue;
+                expected.add("breaks: " + r.name() + ": " + LocalizeEval.Limits.ISSUE_19.describe(r));
+            }
+            if (expected.isEmpty()) expected.add("breaks: none");
+            assertEquals(expected, lines.subList(start + 3 + recs.size(), start + 3 + recs.size() + expected.size()), label);
+            for (LocalizeEval.Result r : each) {
+                assertTrue(r.ballSamples() <= r.cycles(), r.name());
+                assertTrue(r.selfSamples() > 80, r.name() + ": " + r.selfSamples() + " cycles with a self belief");
+            }
+        }
+        assertTrue(lines.get(lines.size() - 1).startsWith("self_median_m="), "the pooled key=value summary stays last");
+
+        String[] tsvArgs = new String[args.length + 1];
+        tsvArgs[0] = "--tsv";
+        System.arraycopy(args, 0, tsvArgs, 1, args.length);
+        String[] tsv = run(tsvArgs).trim().split("\n");
+        assertEquals(1 + 2 * (recs.size() + 1), tsv.length, "header, then every recording and the pooled row per filter");
+        for (String t : tsv) assertEquals(LocalizeEval.TSV_HEADER.length, t.split("\t").length, t);
+    }
+
+    @Test
+    void theBallCountsOnlyWhileSeenInTheLastSecond() throws IOException {
+        assumeTrue(Recordings.dir().isPresent(), Recordings.missingMessage());
+        // S6: the head pan takes the ball out of view after line 316 until line 409 (See every 3rd line).
+        LocalizeEval.Result r = LocalizeEval.run(Recordings.named("S6"), LocalizationConfig.DEFAULT);
+        for (LocalizeEval.Cycle c : r.cycleLog()) {
+            if (c.k() >= 316 && c.k() <= 366) assertTrue(c.ballInView(), "seen at line 316, counted for 1 s: " + c.k());
+            if (c.k() >= 368 && c.k() <= 408) assertFalse(c.ballInView(), "more than 1 s after the last sighting: " + c.k());
+            if (c.k() >= 409 && c.k() <= 420) assertTrue(c.ballInView(), "seen again from line 409: " + c.k());
+        }
+    }
+}
