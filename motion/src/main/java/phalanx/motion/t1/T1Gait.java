@@ -1,0 +1,166 @@
+package phalanx.motion.t1;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * An open-loop IK walk for the Booster T1 on rcssservermj, with optional torso-attitude feedback at the ankles
+ * and hips. Each step (half a cycle) the torso sways sideways over the support foot (a sine), the swing foot
+ * lifts (a sine over the single-support part) and moves to half a step ahead while the support foot moves
+ * back linearly at the commanded speed; turning alternates the hip yaws the same way. Feet are placed by
+ * {@link T1LegKinematics} with the soles level in the torso frame.
+ *
+ * <p>{@link #next} at zero velocity steps on the spot; {@link #stand()} holds a still pose (and resets the
+ * gait, so the next {@code next} starts a fresh step with the left foot as support).
+ */
+public final class T1Gait {
+    private static final String[] LEFT = {"lle1", "lle2", "lle3", "lle4", "lle5", "lle6"};
+    private static final String[] RIGHT = {"rle1", "rle2", "rle3", "rle4", "rle5", "rle6"};
+
+    private final T1GaitConfig c;
+    private final T1LegKinematics leftLeg, rightLeg;
+    private final double[] qLeft = new double[6], qRight = new double[6];
+    private final double[] prevLeft = new double[6], prevRight = new double[6];
+    private boolean havePrev;
+
+    // gait state: time in the step, which foot supports, each foot's offset (x, y, yaw) now and at step start
+    private double t;
+    private boolean leftSupport = true;
+    private int steps;
+    private final double[] foot = new double[6];      // left x, y, yaw, right x, y, yaw
+    private final double[] footStart = new double[6];
+    private double vx, vy, turn;                       // ramped commands
+    private double roll, pitch, rollRate, pitchRate;  // feedback, radians
+    private double lastSway, lastLiftLeft, lastLiftRight;
+
+    public T1Gait(T1GaitConfig config) {
+        this.c = config;
+        this.leftLeg = new T1LegKinematics(config, true);
+        this.rightLeg = new T1LegKinematics(config, false);
+        double[] init = {-0.3, 0, 0, 0.6, -0.3, 0};
+        System.arraycopy(init, 0, qLeft, 0, 6);
+        System.arraycopy(init, 0, qRight, 0, 6);
+    }
+
+    public T1GaitConfig config() { return c; }
+
+    /** Torso attitude for the feedback: roll and pitch (rad, from torso_quat), their rates (rad/s, torso_gyro). */
+    public void feedback(double rollRad, double pitchRad, double rollRateRadS, double pitchRateRadS) {
+        this.roll = rollRad;
+        this.pitch = pitchRad;
+        this.rollRate = rollRateRadS;
+        this.pitchRate = pitchRateRadS;
+    }
+
+    /** A still standing pose, both feet at the stance position, and a reset gait. */
+    public List<JointCommand> stand() {
+        t = 0;
+        steps = 0;
+        leftSupport = true;
+        vx = vy = turn = 0;
+        java.util.Arrays.fill(foot, 0);
+        java.util.Arrays.fill(footStart, 0);
+        lastSway = lastLiftLeft = lastLiftRight = 0;
+        return pose(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, false);
+    }
+
+    /** One 0.02 s cycle of walking at the given command (clamped to the config's limits). */
+    public List<JointCommand> next(double vxMps, double vyMps, double turnDegPerS) {
+        double ax = c.accel() * c.dt();
+        vx = approach(vx, clamp(vxMps, -c.maxVx() / 2, c.maxVx()), ax);
+        vy = approach(vy, clamp(vyMps, -c.maxVy(), c.maxVy()), ax);
+        turn = approach(turn, Math.toRadians(clamp(turnDegPerS, -c.maxTurn(), c.maxTurn())), Math.toRadians(200 * c.accel() * c.dt()));
+        t += c.dt();
+        if (t >= c.stepTime() - 1e-9) {
+            t -= c.stepTime();
+            leftSupport = !leftSupport;
+            steps++;
+            System.arraycopy(foot, 0, footStart, 0, 6);
+        }
+        double s = t / c.stepTime();
+        double ts = c.stepTime();
+        int sup = leftSupport ? 0 : 3, sw = leftSupport ? 3 : 0;
+        // support foot: linearly back at the commanded velocity
+        double[] supEnd = {-vx * ts / 2, -vy * ts / 2, -turn * ts / 2};
+        double[] swEnd = {vx * ts / 2, vy * ts / 2, turn * ts / 2};
+        double d = c.doubleSupport();
+        double u = clamp((s - d / 2) / (1 - d), 0, 1);
+        double smooth = 0.5 - 0.5 * Math.cos(Math.PI * u);
+        for (int k = 0; k < 3; k++) {
+            foot[sup + k] = footStart[sup + k] + (supEnd[k] - footStart[sup + k]) * s;
+            foot[sw + k] = footStart[sw + k] + (swEnd[k] - footStart[sw + k]) * smooth;
+        }
+        double ramp = Math.min(1.0, (steps + s) / 1.0);
+        double sway = ramp * c.sway() * Math.sin(Math.PI * s) * (leftSupport ? 1 : -1);
+        double lift = ramp * c.lift() * Math.sin(Math.PI * u);
+        double liftL = leftSupport ? 0 : lift, liftR = leftSupport ? lift : 0;
+        return pose(foot[0], foot[1], foot[2], foot[3], foot[4], foot[5], sway, liftL, liftR, ramp, true);
+    }
+
+    /** Whether the left foot is the support foot in the current step. */
+    public boolean leftSupport() { return leftSupport; }
+
+    /** Current foot offsets from stance (left x, y, yaw, right x, y, yaw; m, rad). */
+    public double[] footOffsets() { return foot.clone(); }
+
+    /** Current lift of the left and right foot (m). */
+    public double[] lifts() { return new double[]{lastLiftLeft, lastLiftRight}; }
+
+    private List<JointCommand> pose(double lx, double ly, double lyaw, double rx, double ry, double ryaw,
+                                    double sway, double liftL, double liftR, double ramp, boolean walking) {
+        lastSway = sway;
+        lastLiftLeft = liftL;
+        lastLiftRight = liftR;
+        // keep the feet from crossing: the inner side offset is limited
+        ly = Math.max(ly, -0.02);
+        ry = Math.min(ry, 0.02);
+        lyaw = Math.max(lyaw, -0.35);
+        ryaw = Math.min(ryaw, 0.35);
+        leftLeg.inverse(c.footX() + lx, c.footY() + ly - sway, c.footZ() + liftL, lyaw, qLeft);
+        rightLeg.inverse(c.footX() + rx, -c.footY() + ry - sway, c.footZ() + liftR, ryaw, qRight);
+        double[] l = qLeft.clone(), r = qRight.clone();
+        // feedback: torso pitching forward (pitch > 0) -> ankles push toes down (ankle pitch more negative?)
+        double pe = pitch - Math.toRadians(c.torsoPitchDeg());
+        double pc = c.pitchGain() * pe + c.pitchRateGain() * pitchRate;
+        double rc = c.rollGain() * roll + c.rollRateGain() * rollRate;
+        l[4] += pc;
+        r[4] += pc;
+        l[5] -= rc;
+        r[5] -= rc;
+        List<JointCommand> out = new ArrayList<>(23);
+        double[][] rl = leftLeg.ranges(), rr = rightLeg.ranges();
+        for (int k = 0; k < 6; k++) {
+            l[k] = clamp(l[k], rl[k][0], rl[k][1]);
+            r[k] = clamp(r[k], rr[k][0], rr[k][1]);
+        }
+        for (int k = 0; k < 6; k++) {
+            boolean ankle = k >= 4;
+            double kp = ankle ? c.ankleKp() : c.legKp(), kd = ankle ? c.ankleKd() : c.legKd();
+            double dl = havePrev && walking ? (l[k] - prevLeft[k]) / c.dt() : 0;
+            double dr = havePrev && walking ? (r[k] - prevRight[k]) / c.dt() : 0;
+            out.add(new JointCommand(LEFT[k], Math.toDegrees(l[k]), Math.toDegrees(dl), kp, kd, 0));
+            out.add(new JointCommand(RIGHT[k], Math.toDegrees(r[k]), Math.toDegrees(dr), kp, kd, 0));
+        }
+        System.arraycopy(l, 0, prevLeft, 0, 6);
+        System.arraycopy(r, 0, prevRight, 0, 6);
+        havePrev = true;
+        out.add(new JointCommand("lae1", 0, 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("rae1", 0, 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("lae2", c.shoulderRollDeg(), 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("rae2", -c.shoulderRollDeg(), 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("lae3", c.elbowDeg(), 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("rae3", c.elbowDeg(), 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("lae4", 0, 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("rae4", 0, 0, c.armKp(), c.armKd(), 0));
+        out.add(new JointCommand("he1", 0, 0, c.armKp() / 4, c.armKd() / 4, 0));
+        out.add(new JointCommand("he2", 0, 0, c.armKp() / 4, c.armKd() / 4, 0));
+        out.add(new JointCommand("te1", 0, 0, c.legKp(), c.legKd(), 0));
+        return out;
+    }
+
+    private static double approach(double v, double target, double step) {
+        return v < target ? Math.min(target, v + step) : Math.max(target, v - step);
+    }
+
+    static double clamp(double v, double lo, double hi) { return Math.max(lo, Math.min(hi, v)); }
+}

@@ -1,0 +1,87 @@
+package phalanx.motion.t1;
+
+/**
+ * Every constant of the T1 gait. Geometry is read from rcsssmj 0.2.1 resources/robots/T1/robot.xml (body
+ * {@code pos} attributes); gait values were tuned on rcssservermj with {@code scripts/phalanx bench t1}
+ * (motion/README.md, "T1 gait (rcssservermj)").
+ *
+ * @param waistX            torso origin to the Waist body, x (robot.xml Waist pos 0.0625 0 -0.1155)
+ * @param waistZ            torso origin to the Waist body, z
+ * @param hipY              Waist to Hip_Pitch_Left/Right, |y| (pos 0 ±0.106 0)
+ * @param hipPitchToRoll    Hip_Pitch to Hip_Roll, -z (pos 0 0 -0.02)
+ * @param hipRollToYaw      Hip_Roll to Hip_Yaw, -z (pos 0 0 -0.081854)
+ * @param yawToKneeX        Hip_Yaw to Shank (knee), x (pos -0.014 0 -0.134)
+ * @param yawToKneeZ        Hip_Yaw to Shank (knee), -z
+ * @param shank             Shank to Ankle_Cross (ankle pitch), -z (pos 0 0 -0.28)
+ * @param anklePitchToRoll  Ankle_Cross to foot_link (ankle roll), -z (pos 0 ±0.00025 -0.012)
+ * @param anklePitchToRollY Ankle_Cross to foot_link, |y|
+ * @param soleDepth         foot_link frame to the sole (foot box pos z -0.015, half height 0.015)
+ * @param footX             foot frame x in the torso frame when standing (m; straight leg: 0.0485)
+ * @param footY             foot frame |y| in the torso frame when standing (m; straight leg: 0.10625)
+ * @param footZ             foot frame z in the torso frame when standing (m; straight leg: -0.6434), the crouch
+ * @param stepTime          one step (half a gait cycle), s
+ * @param doubleSupport     fraction of a step with both feet down
+ * @param sway              lateral torso sway amplitude over the support foot, m
+ * @param lift              swing foot lift height, m
+ * @param maxVx             forward speed limit, m/s (backward: half of it)
+ * @param maxVy             sideways speed limit, m/s
+ * @param maxTurn           turn rate limit, deg/s
+ * @param accel             command ramp, m/s per s (turn: 10 x this in deg/s per s)
+ * @param legKp             hip and knee stiffness, N m / rad (booster_gym's T1 value 200)
+ * @param legKd             hip and knee damping, N m s / rad
+ * @param ankleKp           ankle stiffness, N m / rad
+ * @param ankleKd           ankle damping, N m s / rad
+ * @param armKp             arms, head and waist stiffness
+ * @param armKd             arms, head and waist damping
+ * @param shoulderRollDeg   arms down: left shoulder roll (right mirrored), deg (0 = arms out sideways)
+ * @param elbowDeg          elbow pitch, deg
+ * @param pitchGain         ankle pitch correction per rad of torso pitch (rad/rad)
+ * @param pitchRateGain     ankle pitch correction per rad/s of torso pitch rate
+ * @param rollGain          ankle/hip roll correction per rad of torso roll
+ * @param rollRateGain      ankle/hip roll correction per rad/s of torso roll rate
+ * @param torsoPitchDeg     wanted torso pitch (forward lean, deg) for the feedback's reference
+ * @param dt                control cycle, s (rcssservermj: 0.02)
+ */
+public record T1GaitConfig(double waistX, double waistZ, double hipY, double hipPitchToRoll, double hipRollToYaw,
+                           double yawToKneeX, double yawToKneeZ, double shank, double anklePitchToRoll,
+                           double anklePitchToRollY, double soleDepth,
+                           double footX, double footY, double footZ,
+                           double stepTime, double doubleSupport, double sway, double lift,
+                           double maxVx, double maxVy, double maxTurn, double accel,
+                           double legKp, double legKd, double ankleKp, double ankleKd, double armKp, double armKd,
+                           double shoulderRollDeg, double elbowDeg,
+                           double pitchGain, double pitchRateGain, double rollGain, double rollRateGain,
+                           double torsoPitchDeg, double dt) {
+
+    public static T1GaitConfig defaults() {
+        return new T1GaitConfig(0.0625, -0.1155, 0.106, 0.02, 0.081854,
+                -0.014, 0.134, 0.28, 0.012,
+                0.00025, 0.03,
+                0.045, 0.106, -0.60,
+                0.30, 0.2, 0.035, 0.05,
+                0.8, 0.3, 90, 0.5,
+                200, 5, 200, 2, 60, 2,
+                -75, 0,
+                0.0, 0.0, 0.0, 0.0,
+                0.0, 0.02);
+    }
+
+    /** A copy with a named field changed (for the bench's --set name=value). */
+    public T1GaitConfig with(String name, double value) {
+        java.lang.reflect.RecordComponent[] rc = T1GaitConfig.class.getRecordComponents();
+        Object[] args = new Object[rc.length];
+        Class<?>[] types = new Class<?>[rc.length];
+        boolean found = false;
+        try {
+            for (int i = 0; i < rc.length; i++) {
+                types[i] = double.class;
+                args[i] = rc[i].getName().equals(name) ? (Object) value : rc[i].getAccessor().invoke(this);
+                found |= rc[i].getName().equals(name);
+            }
+            if (!found) throw new IllegalArgumentException("no T1GaitConfig field " + name);
+            return T1GaitConfig.class.getDeclaredConstructor(types).newInstance(args);
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+}
