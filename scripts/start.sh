@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# start.sh [host] [port] [team] [--nine] [--log-dir DIR] [--only "1 2 ..."]
-# Starts the Phalanx team (11 players, or 9 with --nine for server 0.6.5) against rcssserver3d;
+# start.sh [host] [port] [team] [--nine | --mj] [--log-dir DIR] [--only "1 2 ..."]
+# Starts the Phalanx team (11 players, or 9 with --nine for server 0.6.5) against rcssserver3d, or
+# 7 Booster T1 players against rcssservermj with --mj (docs/rcssservermj.md);
 # --only starts just those uniform numbers (e.g. --only 1 for the goalkeeper test of thesis 6.3).
 # Installs the build tools if missing and builds first. Players connect one after another, each once
 # the previous one is in the game, so no two robots are created in the same cycle. Each player gets
@@ -8,11 +9,12 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 
-host=127.0.0.1; port=3100; team=Phalanx; players=11; logdir=""; only=""
+host=127.0.0.1; port=3100; team=Phalanx; players=11; logdir=""; only=""; mj=0
 pos=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --nine) players=9 ;;
+    --mj) mj=1; players=7 ;;
     --log-dir) logdir="${2:?--log-dir needs a directory}"; shift ;;
     --only) only="${2:?--only needs uniform numbers}"; shift ;;
     -h|--help) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
@@ -38,6 +40,14 @@ listening() {
     *) (exec 3<>"/dev/tcp/$host/$port") 2>/dev/null ;;
   esac
 }
+if ! listening && [ "$mj" -eq 1 ]; then
+  cat >&2 <<MSG
+start.sh: no rcssservermj is listening on $host:$port.
+  scripts/setup.sh installs it into .venv; start it with
+  .venv/bin/rcssservermj --host 127.0.0.1 --aport $port --mport M --sync --no-realtime --no-render
+MSG
+  exit 3
+fi
 if ! listening; then
   cat >&2 <<MSG
 start.sh: no rcssserver3d is listening on $host:$port.
@@ -61,7 +71,7 @@ mkdir -p "$logdir" || { echo "start.sh: cannot create log directory $logdir" >&2
 # Robot types: the server wants at least 3 types, at most 7 of one, the two most used at most 9
 # together. Types 0, 2 and 4 share the same leg and arm lengths (2: faster ankle pitch, 4: toes),
 # so every motion is tuned on one geometry. Override with PHALANX_TYPES="0 0 2 ...".
-if [ "$players" -eq 11 ]; then default_types="0 0 0 2 2 0 2 0 2 4 4"; else default_types="0 0 2 2 0 2 4 0 4"; fi
+if [ "$players" -eq 11 ]; then default_types="0 0 0 2 2 0 2 0 2 4 4"; elif [ "$players" -eq 9 ]; then default_types="0 0 2 2 0 2 4 0 4"; else default_types="0 0 0 0 0 0 0"; fi
 read -r -a types <<< "${PHALANX_TYPES:-$default_types}"
 [ "${#types[@]}" -eq "$players" ] || { echo "start.sh: PHALANX_TYPES needs $players types, got ${#types[@]}" >&2; exit 2; }
 
@@ -83,7 +93,7 @@ fi
 for unum in $unums; do
   out="$logdir/player-$unum.out"
   nohup java "${jvm[@]}" -Xlog:gc:file="$logdir/gc-$unum.log":uptime,level -cp "$cp" phalanx.agent.Player \
-    --host "$host" --port "$port" --team "$team" --unum "$unum" --players "$players" \
+    --host "$host" --port "$port" --team "$team" --unum "$unum" $([ "$mj" -eq 1 ] && echo --server mj || echo --players "$players") \
     --type "${types[$((unum-1))]}" --log-dir "$logdir" --motions "$root/motions" ${PHALANX_PLAYER_OPTS:-} > "$out" 2>&1 &
   echo "$!" >> "$logdir/pids"
   # Wait until this player is in the game (or gone) before the next one connects.

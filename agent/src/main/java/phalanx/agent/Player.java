@@ -6,6 +6,7 @@ import phalanx.agent.decide.HeadTarget;
 import phalanx.agent.decide.Move;
 import phalanx.agent.action.FieldPlayerBehaviour;
 import phalanx.agent.goalkeeper.GoalkeeperBehaviour;
+import phalanx.agent.mj.MjPlayer;
 import phalanx.agent.roboviz.RoboViz;
 import phalanx.agent.team.TeamChannel;
 import phalanx.agent.team.RoundPlanner;
@@ -52,6 +53,7 @@ public final class Player {
             return 2;
         }
         if (o.logDir() != null && !openLog(o)) return 2;
+        if (o.mj()) return MjPlayer.run(o);
         PlayerParts parts;
         try {
             parts = parts(o);

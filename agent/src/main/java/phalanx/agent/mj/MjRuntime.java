@@ -1,0 +1,76 @@
+package phalanx.agent.mj;
+
+import phalanx.comm.mj.MjActions;
+import phalanx.comm.mj.MjPerception;
+import phalanx.comm.mj.MjPerceptionParser;
+import phalanx.comm.sexp.MalformedMessageException;
+import phalanx.model.field.MjField;
+import phalanx.motion.t1.JointCommand;
+import phalanx.model.robot.T1Model;
+import phalanx.motion.t1.T1Gait;
+import phalanx.motion.t1.T1GaitConfig;
+
+import java.util.List;
+import java.util.logging.Logger;
+
+/**
+ * One T1 player's cycle on rcssservermj: sense (parse) → model ({@link MjWorld}) → decide ({@link MjBehaviour})
+ * → act (the T1 gait's joint PD commands, a beam when decided). Always answers, also to a message it cannot parse
+ * (the last joint commands again), because an agent-sync server waits for every agent each cycle.
+ */
+public final class MjRuntime {
+    private static final Logger LOG = Logger.getLogger(MjRuntime.class.getName());
+    private static final int MALFORMED_LOGGED = 5;
+
+    private final MjPerceptionParser parser = new MjPerceptionParser();
+    private final MjWorld world;
+    private final MjBehaviour behaviour;
+    private final T1Gait gait = new T1Gait(T1GaitConfig.defaults());
+    private final MjActions actions = new MjActions();
+    private String last = "(syn)";
+    private final int unum;
+    private long cycles, malformed, beams;
+
+    public MjRuntime(String team, int unum, MjField field) {
+        this.unum = unum;
+        this.world = new MjWorld(team);
+        this.behaviour = new MjBehaviour(field, unum, MjBehaviour.Config.DEFAULT);
+    }
+
+    /** The reply to one server message. */
+    public String update(String message) {
+        cycles++;
+        MjPerception p;
+        try {
+            p = parser.parse(message);
+        } catch (MalformedMessageException e) {
+            if (++malformed <= MALFORMED_LOGGED) LOG.warning("skipped a malformed message (" + e.getMessage() + ")");
+            return last;
+        }
+        world.update(p);
+        if (p.quat() != null && p.gyro() != null) {
+            double[] rp = T1Model.rollPitch(p.quat());
+            gait.feedback(rp[0], rp[1], Math.toRadians(p.gyro()[0]), Math.toRadians(p.gyro()[1]));
+        }
+        MjBehaviour.Intent intent = behaviour.decide(world);
+        List<JointCommand> joints = intent.walks() ? gait.next(intent.vx(), intent.vy(), intent.turnDegPerS()) : gait.stand();
+        for (JointCommand j : joints) actions.joint(j.actuator(), j.qDeg(), j.dqDeg(), j.kp(), j.kd(), j.tau());
+        String reply = actions.build();
+        last = reply;
+        if (intent.beam() != null) {
+            beams++;
+            int side = world.side();
+            // The server puts x on our side itself and turns the right team by 180° (soccer_sim.py beam_agent),
+            // but takes y as a world y: our own-frame y is its negative for the right team.
+            reply = MjActions.beam(intent.beam().x(), intent.beam().y() * side, intent.beam().thetaDeg()) + reply;
+        }
+        return reply;
+    }
+
+    public int unum() { return unum; }
+    public MjWorld world() { return world; }
+    public MjBehaviour behaviour() { return behaviour; }
+    public long cycles() { return cycles; }
+    public long malformed() { return malformed; }
+    public long beams() { return beams; }
+}
