@@ -21,6 +21,8 @@ class PlayerOptionsTest {
         assertEquals(9, o.players());
         assertEquals(4, o.robotType());
         assertEquals("/tmp/x", o.logDir().toString());
+        assertFalse(d.mj(), "SimSpark by default");
+        assertTrue(PlayerOptions.parse("--server", "mj").mj());
     }
 
     @Test
@@ -32,6 +34,7 @@ class PlayerOptionsTest {
         assertBad("--type must be 0-4, got 5", "--type", "5");
         assertBad("--dribble-within must be 0-100, got 101", "--dribble-within", "101");
         assertBad("--team must be", "--team", "two words");
+        assertBad("--server must be simspark or mj, got 'mujoco'", "--server", "mujoco");
         assertBad("unknown flag --speed", "--speed", "3");
         assertBad("--host needs a value", "--host");
         assertBad("unexpected argument 'foo'", "foo");
