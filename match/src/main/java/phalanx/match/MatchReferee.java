@@ -15,6 +15,9 @@ public final class MatchReferee {
               --left starts first and so normally plays on the left.
               --dir DIR            where the server, team and match logs go (default /tmp/phalanx-matches/<time>-A-vs-B)
               --out FILE           the result JSON (default DIR/result.json)
+              --server S           simspark (default: rcssserver3d) or mj (rcssservermj: one server run per half,
+                                   agent-sync without real time, --players 7 and --half-time up to 300 by default;
+                                   found as $PHALANX_RCSSSERVERMJ, .venv/bin/rcssservermj or on PATH)
             """ + MatchOptions.HELP;
 
     private MatchReferee() { }
@@ -22,7 +25,11 @@ public final class MatchReferee {
     public static void main(String[] argv) {
         MatchRunner runner;
         try {
-            Args a = MatchOptions.parse(argv, USAGE, "match", Set.of("left", "right", "dir", "out"), Set.of());
+            Args a = MatchOptions.parse(argv, USAGE, "match", Set.of("left", "right", "dir", "out", "server"), Set.of());
+            String server = a.get("server", "simspark");
+            if (!server.equals("simspark") && !server.equals("mj")) {
+                throw new IllegalArgumentException("match: --server must be simspark or mj, got '" + server + "'");
+            }
             if (a.get("left", null) == null || a.get("right", null) == null) {
                 throw new IllegalArgumentException("match: both --left and --right are needed");
             }
@@ -30,6 +37,10 @@ public final class MatchReferee {
             TeamCommand right = TeamCommand.parse(a.get("right", null));
             Path dir = Path.of(a.get("dir", "/tmp/phalanx-matches/" + MatchOptions.stamp() + "-" + left.label() + "-vs-" + right.label()));
             Path out = Path.of(a.get("out", dir.resolve("result.json").toString()));
+            if (server.equals("mj")) {
+                playMj(a, left, right, dir, out);
+                return;
+            }
             runner = new MatchRunner(MatchOptions.config(a, left, right, dir, out), System.out);
         } catch (IllegalArgumentException | IllegalStateException e) {
             System.err.println(e.getMessage());
@@ -41,6 +52,19 @@ public final class MatchReferee {
         Thread hook = new Thread(() -> r.abort("interrupted (Ctrl-C or SIGTERM)"), "match-stop");
         Runtime.getRuntime().addShutdownHook(hook);
         MatchResult result = r.run();
+        System.exit(result != null && result.completed() ? 0 : 1);
+    }
+
+    private static void playMj(Args a, TeamCommand left, TeamCommand right, Path dir, Path out) {
+        Path exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir"))).orElseThrow(() ->
+                new IllegalArgumentException("match: no rcssservermj ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh"));
+        int agent = a.integer("agent-port", 0, 0, 65535);
+        if (agent == 0) agent = ServerProcess.freePortPair(3700);
+        MjMatch m = new MjMatch(new MjMatch.Config(exe, left, right, agent, a.integer("monitor-port", agent + 100, 1, 65535),
+                a.number("half-time", MjMatch.Config.RULE_HALF, 1, MjMatch.Config.RULE_HALF), a.integer("halves", 2, 1, 2),
+                a.integer("players", 7, 1, 7), a.number("connect-timeout", 120, 1, 3600), dir, out), System.out);
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> m.abort("interrupted (Ctrl-C or SIGTERM)"), "match-stop"));
+        MatchResult result = m.run();
         System.exit(result != null && result.completed() ? 0 : 1);
     }
 }

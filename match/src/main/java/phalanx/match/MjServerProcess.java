@@ -15,13 +15,22 @@ import java.util.Optional;
  * {@code rcssservermj} on PATH.
  */
 public final class MjServerProcess {
-    /** {@code realTime = false} lets the server run as fast as sync-mode agents answer. */
-    public record Settings(int agentPort, int monitorPort, boolean sync, boolean realTime) {
+    /**
+     * {@code realTime = false} lets the server run as fast as sync-mode agents answer. One server run plays one
+     * {@code phase} (0 first half, 1 second half) and ends in GameOver (games/soccer/sim/soccer_referee.py);
+     * {@code startTime}, when not NaN, is the play time it starts at (--time), which shortens the half.
+     */
+    public record Settings(int agentPort, int monitorPort, boolean sync, boolean realTime, int phase, double startTime) {
         public Settings {
             if (agentPort <= 0 || monitorPort <= 0 || agentPort == monitorPort)
                 throw new IllegalArgumentException("agent and monitor ports must be two different positive ports");
             if (!sync && !realTime)
                 throw new IllegalArgumentException("a server that is neither real-time nor agent-sync runs away from its agents");
+            if (phase < 0 || phase > 1) throw new IllegalArgumentException("phase must be 0 or 1, got " + phase);
+        }
+
+        public Settings(int agentPort, int monitorPort, boolean sync, boolean realTime) {
+            this(agentPort, monitorPort, sync, realTime, 0, Double.NaN);
         }
     }
 
@@ -52,6 +61,8 @@ public final class MjServerProcess {
                 "--aport", Integer.toString(s.agentPort()), "--mport", Integer.toString(s.monitorPort()), "--no-render"));
         if (s.sync()) argv.add("--sync");
         argv.add(s.realTime() ? "--realtime" : "--no-realtime");
+        if (s.phase() != 0) argv.addAll(List.of("--phase", Integer.toString(s.phase())));
+        if (!Double.isNaN(s.startTime())) argv.addAll(List.of("--time", Double.toString(s.startTime())));
         return argv;
     }
 

@@ -47,6 +47,11 @@ class MjServerProcessTest {
         List<String> argv = MjServerProcess.command(Path.of("/x/rcssservermj"), new MjServerProcess.Settings(3950, 4050, true, false));
         assertEquals(List.of("/x/rcssservermj", "--host", "127.0.0.1", "--aport", "3950", "--mport", "4050", "--no-render",
                 "--sync", "--no-realtime"), argv);
+        assertEquals(List.of("/x/rcssservermj", "--host", "127.0.0.1", "--aport", "3950", "--mport", "4050", "--no-render",
+                "--sync", "--no-realtime", "--phase", "1", "--time", "540.0"),
+                MjServerProcess.command(Path.of("/x/rcssservermj"), new MjServerProcess.Settings(3950, 4050, true, false, 1, 540)),
+                "the second half, 60 s long");
+        assertThrows(IllegalArgumentException.class, () -> new MjServerProcess.Settings(3950, 4050, true, false, 2, 0));
         assertThrows(IllegalArgumentException.class, () -> new MjServerProcess.Settings(3950, 4050, false, false));
         assertThrows(IllegalArgumentException.class, () -> new MjServerProcess.Settings(3950, 3950, true, true));
     }
