@@ -1,8 +1,5 @@
 package phalanx.match;
 
-import phalanx.comm.wire.FrameReader;
-import phalanx.comm.wire.ServerConnection;
-import phalanx.comm.wire.WireException;
 import phalanx.match.MatchResult.Goal;
 import phalanx.match.MatchResult.ModeChange;
 import phalanx.match.MatchResult.RosterEvent;
@@ -64,6 +61,7 @@ public final class MjMatch {
     private volatile MjServerProcess server;
     private volatile String abortReason = "interrupted";
     private int scoreLeft, scoreRight;
+    private String lastMode;
     private double gameTime;
     private Long kickOffNanos;
     /** Per side (0 left, 1 right): uniform numbers that joined, that left, that are on the field now. */
@@ -112,13 +110,11 @@ public final class MjMatch {
         say("half %d: rcssservermj pid %d on agent port %d, monitor port %d (agent-sync, no real time)", half,
                 server.pid(), s.agentPort(), s.monitorPort());
         if (!server.awaitReady(90_000)) return "rcssservermj did not start; see " + server.log();
-        ServerConnection monitor = connectMonitor(s.monitorPort());
-        if (monitor == null) return aborted.get() ? abortReason : "no monitor port " + s.monitorPort() + "; see " + server.log();
         MjMonitor follower = new MjMonitor();
         long[] lastMessage = {System.nanoTime()};
-        Thread reader = new Thread(() -> follow(monitor, follower, dir.resolve("monitor.log.gz"), lastMessage), "mj-monitor");
-        reader.setDaemon(true);
-        reader.start();
+        Writer log = new BufferedWriter(new OutputStreamWriter(new GZIPOutputStream(Files.newOutputStream(dir.resolve("monitor.log.gz"))),
+                StandardCharsets.ISO_8859_1));
+        server.onMonitorMessage(m -> follow(m, follower, log, lastMessage));
         try {
             int joinedBefore = 0;
             TeamCommand[] order = {cfg.left(), cfg.right()};
@@ -135,7 +131,7 @@ public final class MjMatch {
             }
             say("half %d: %s left, %s right, %d players each", half, cfg.left().label(), cfg.right().label(), cfg.players());
             Thread.sleep(2000);   // let the last beams land
-            monitor.send("(kickOff " + (half == 1 ? "Left" : "Right") + ")");
+            server.command("(kickOff " + (half == 1 ? "Left" : "Right") + ")");
             if (kickOffNanos == null) kickOffNanos = System.nanoTime();
             double[] nextReport = {0};
             String e = waitFor(() -> {
@@ -154,8 +150,8 @@ public final class MjMatch {
             return null;
         } finally {
             stopProcesses();
-            monitor.close();
             server.stop();
+            synchronized (log) { log.close(); }
         }
     }
 
@@ -188,41 +184,27 @@ public final class MjMatch {
         teamNames.addAll(names);
     }
 
-    private void follow(ServerConnection monitor, MjMonitor follower, Path logFile, long[] lastMessage) {
-        try (Writer log = new BufferedWriter(new OutputStreamWriter(new GZIPOutputStream(Files.newOutputStream(logFile)), StandardCharsets.ISO_8859_1))) {
-            FrameReader in = monitor.reader();
-            String mode = null;
-            while (!done.get()) {
-                in.next();
-                lastMessage[0] = System.nanoTime();
-                String m = in.text();
-                log.write(m.replace('\n', ' '));
-                log.write('\n');
-                MjMonitor.State st = follower.accept(m);
-                if (st == null) continue;
-                synchronized (this) {
-                    gameTime = st.time();
-                    if (st.scoreLeft() > scoreLeft || st.scoreRight() > scoreRight) {
-                        String side = st.scoreLeft() > scoreLeft ? "left" : "right";
-                        scoreLeft = st.scoreLeft();
-                        scoreRight = st.scoreRight();
-                        goals.add(new Goal(st.time(), st.half(), side, side.equals("left") ? cfg.left().label() : cfg.right().label(),
-                                scoreLeft, scoreRight));
-                        say("GOAL %s at %.1f: %d:%d", side, st.time(), scoreLeft, scoreRight);
-                    }
-                    if (!st.playMode().equals(mode)) modes.add(new ModeChange(st.time(), st.half(), mode = st.playMode()));
-                }
-            }
-        } catch (IOException e) {
-            // the stream ends when the server stops; waitFor notices a stall or a dead server
-        }
-    }
-
-    private ServerConnection connectMonitor(int port) {
+    /** One monitor message (on the server's monitor thread): recorded, and the score and play modes followed. */
+    private void follow(String m, MjMonitor follower, Writer log, long[] lastMessage) {
+        lastMessage[0] = System.nanoTime();
         try {
-            return ServerConnection.connect("127.0.0.1", port, 30_000);
-        } catch (WireException e) {
-            return null;
+            synchronized (log) { log.write(m.replace('\n', ' ')); log.write('\n'); }
+        } catch (IOException e) {
+            // closed at the end of the half, or the disk is full: the game goes on unrecorded
+        }
+        MjMonitor.State st = follower.accept(m);
+        if (st == null) return;
+        synchronized (this) {
+            gameTime = st.time();
+            if (st.scoreLeft() > scoreLeft || st.scoreRight() > scoreRight) {
+                String side = st.scoreLeft() > scoreLeft ? "left" : "right";
+                scoreLeft = st.scoreLeft();
+                scoreRight = st.scoreRight();
+                goals.add(new Goal(st.time(), st.half(), side, side.equals("left") ? cfg.left().label() : cfg.right().label(),
+                        scoreLeft, scoreRight));
+                say("GOAL %s at %.1f: %d:%d", side, st.time(), scoreLeft, scoreRight);
+            }
+            if (!st.playMode().equals(lastMode)) modes.add(new ModeChange(st.time(), st.half(), lastMode = st.playMode()));
         }
     }
 

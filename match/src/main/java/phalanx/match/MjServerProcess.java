@@ -1,5 +1,8 @@
 package phalanx.match;
 
+import phalanx.comm.wire.ServerConnection;
+import phalanx.comm.wire.WireException;
+
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -37,6 +40,9 @@ public final class MjServerProcess {
     private final Settings settings;
     private final SessionProcess process;
     private final Path log;
+    private volatile ServerConnection monitor;
+    private volatile double simTime = -1;
+    private volatile java.util.function.Consumer<String> listener;
 
     private MjServerProcess(Settings settings, SessionProcess process, Path log) {
         this.settings = settings;
@@ -76,17 +82,72 @@ public final class MjServerProcess {
     }
 
     /**
-     * Waits until the server logs "Starting server... DONE!": it listens before its simulation loop runs, and
-     * an agent that connects in between can be dropped (seen on a first start, when Python compiles the package).
+     * Waits until the server logs "Starting server... DONE!", then opens this server's one monitor connection and
+     * waits until the simulation has stepped (a monitor message with simulation time > 0). Three server quirks
+     * (rcsssmj 0.2.1, docs/rcssservermj.md): it listens before its loop runs, and an agent that connects in between
+     * is dropped; a first agent that joins before the first step crashes the simulation thread (sim/audio_engine.py:
+     * AudioData starts with origins of shape (0, 3), which the first step replaces by (3, 0); seen in 1 of 3 starts);
+     * and a monitor connection closed while the server runs can crash it too (its simulation thread sends to the
+     * closed socket: OSError Bad file descriptor, seen in 1 of 7). So the monitor stays open until {@link #stop}:
+     * use {@link #command} and {@link #onMonitorMessage} rather than a connection of your own.
      */
     public boolean awaitReady(long timeoutMillis) throws IOException, InterruptedException {
         long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
-        while (System.nanoTime() < deadline) {
-            if (Files.exists(log) && Files.readString(log).contains("Starting server... DONE!")) return true;
-            if (!alive()) return false;
+        while (!(Files.exists(log) && Files.readString(log).contains("Starting server... DONE!"))) {
+            if (!alive() || System.nanoTime() > deadline) return false;
             Thread.sleep(100);
         }
-        return false;
+        long left = Math.max(1, (deadline - System.nanoTime()) / 1_000_000L);
+        try {
+            monitor = ServerConnection.connect("127.0.0.1", settings.monitorPort(), left);
+        } catch (WireException e) {
+            return false;
+        }
+        Thread drain = new Thread(this::drainMonitor, "rcssservermj-monitor");
+        drain.setDaemon(true);
+        drain.start();
+        while (simTime <= 0) {
+            if (!alive() || System.nanoTime() > deadline) return false;
+            Thread.sleep(20);
+        }
+        return true;
+    }
+
+    /** Reads the monitor stream for the server's lifetime (an unread stream would block the server's sends). */
+    private void drainMonitor() {
+        try {
+            while (true) {
+                monitor.reader().next();
+                String m = monitor.reader().text();
+                double t = simulationTime(m);
+                if (t > 0) simTime = t;
+                java.util.function.Consumer<String> l = listener;
+                if (l != null) l.accept(m);
+            }
+        } catch (IOException e) {
+            // the server stopped
+        }
+    }
+
+    /** Every monitor message from now on goes to {@code l}, on the monitor thread. */
+    public void onMonitorMessage(java.util.function.Consumer<String> l) { listener = l; }
+
+    /** Sends a monitor command such as {@code (kickOff Left)}; only after {@link #awaitReady}. */
+    public synchronized void command(String c) throws IOException {
+        if (monitor == null) throw new IOException("rcssservermj's monitor is not connected (call awaitReady first)");
+        monitor.send(c);
+    }
+
+    /** The {@code ((gt 1 0)T)} simulation time of a monitor message, or -1. */
+    static double simulationTime(String monitorMessage) {
+        int at = monitorMessage.indexOf("(gt 1 0)");
+        if (at < 0) return -1;
+        int end = monitorMessage.indexOf(')', at + 8);
+        try {
+            return end < 0 ? -1 : Double.parseDouble(monitorMessage.substring(at + 8, end).trim());
+        } catch (NumberFormatException e) {
+            return -1;
+        }
     }
 
     public Settings settings() { return settings; }
@@ -94,6 +155,9 @@ public final class MjServerProcess {
     public long pid() { return process.pid(); }
     public boolean alive() { return process.anyAlive(); }
 
-    /** SIGINT (its handler shuts the simulation down), SIGKILL after 10 s. */
-    public void stop() { process.stop("INT", 10_000); }
+    /** SIGINT (its handler shuts the simulation down), SIGKILL after 10 s; then the monitor connection closes. */
+    public void stop() {
+        process.stop("INT", 10_000);
+        if (monitor != null) monitor.close();
+    }
 }

@@ -56,6 +56,14 @@ class MjServerProcessTest {
         assertThrows(IllegalArgumentException.class, () -> new MjServerProcess.Settings(3950, 3950, true, true));
     }
 
+    @Test
+    void simulationTimeOfARecordedMonitorMessage() throws IOException {
+        String first = Files.readAllLines(Path.of("match/src/test/resources/rcssservermj/monitor-kickoff.txt")).get(0);
+        assertTrue(MjServerProcess.simulationTime(first) > 0, first.substring(0, 40));
+        assertEquals(-1, MjServerProcess.simulationTime("((RSMP 1 0)((gt 1 0)x))"));
+        assertEquals(-1, MjServerProcess.simulationTime("((RSMP 1 0)"));
+    }
+
     /** Needs the real rcssservermj (scripts/setup.sh installs it into .venv); skips with a message without it. */
     @Test
     void realServerAcceptsAT1AndSendsItsPerceptionsEachCycle(@TempDir Path tmp) throws Exception {

@@ -9,9 +9,6 @@ import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;
 
-import java.io.DataOutputStream;
-import java.net.Socket;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -66,7 +63,7 @@ class MjTeamTest {
             assertNotNull(ball, "the forward sees the ball from its spot");
             double before = forward.world().self().position().distanceTo(ball);
             long start = forward.cycles();
-            monitor(port + 100, "(kickOff Left)");
+            server.command("(kickOff Left)");
             waitFor(() -> forward.cycles() > start + 500, "10 game seconds after the kick-off", outcomes, server);
             String mode = forward.world().playMode();
             assertTrue(mode.equals("KickOff_Left") || mode.equals("PlayOn"), "kick-off given, now " + mode);
@@ -91,18 +88,6 @@ class MjTeamTest {
             }
             if (System.nanoTime() > deadline) fail("no " + what + " within 10 minutes; server log: " + read(server.log()));
             Thread.sleep(50);
-        }
-    }
-
-    /** One monitor command; the connection closes right after (an unread monitor stream would fill up). */
-    private static void monitor(int port, String command) throws Exception {
-        try (Socket s = new Socket("127.0.0.1", port)) {
-            byte[] b = command.getBytes(StandardCharsets.US_ASCII);
-            DataOutputStream out = new DataOutputStream(s.getOutputStream());
-            out.writeInt(b.length);
-            out.write(b);
-            out.flush();
-            Thread.sleep(200);
         }
     }
 
