@@ -68,7 +68,7 @@ class EkfPoseFilterTest {
         assertEquals(-1, f.pose().x(), 1e-9);
         // Trainer move to (3, -4): the first frames are refused, then the filter restarts at the fix.
         Pose2 moved = new Pose2(3, -4, 90);
-        for (int i = 1; i < c.ekfResetFrames(); i++)
+        for (int i = 1; i < c.relocateFrames(); i++)
             assertFalse(f.update(moved, see(moved, new Random(i), 0, Landmark.F1R, Landmark.G1R)));
         assertTrue(f.update(moved, see(moved, new Random(9), 0, Landmark.F1R, Landmark.G1R)));
         assertEquals(3, f.pose().x(), 1e-9);
