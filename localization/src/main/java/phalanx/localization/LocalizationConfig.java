@@ -104,11 +104,11 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
 
-    /** The same with k = frames for the relocation (tests and the bench's before/after). */
-    public LocalizationConfig withRelocateFrames(int frames) {
+    /** The same with other relocation constants (k frames, far metres and degrees, spread metres and degrees). */
+    public LocalizationConfig withRelocation(int frames, double metres, double deg, double spreadMetres, double spreadDeg) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
-                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, frames, relocateMetres,
-                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, trackSetSize,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, frames, metres,
+                deg, spreadMetres, spreadDeg, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
