@@ -12,7 +12,7 @@ import java.util.List;
  * filter over (x, y, theta). Prediction: the walk's odometry plus process noise every cycle.
  * Correction: every seen landmark on its own (so one landmark helps too), the measurement being
  * the landmark's ground vector in the body frame; a Mahalanobis gate drops outliers. Started from
- * the pair-triangulation fix, and re-started from it (relocation, issue 19) after
+ * the pair-triangulation fix, and re-started from the mean of their fixes (relocation, issue 19) after
  * {@code relocateFrames} vision frames in a row that disagree with the belief: every landmark outside
  * the gate and the fix farther than {@code relocateMetres}/{@code relocateDeg} from the belief, each
  * fix within {@code relocateSpread*} of the one before (beam, trainer or referee move). A frame whose fix
@@ -33,6 +33,7 @@ public final class EkfPoseFilter implements PoseFilter {
     private double p00, p01, p02, p11, p12, p22;  // symmetric covariance
     private int badFrames, starts;
     private double lastBadX, lastBadY, lastBadDeg; // the previous disagreeing frame's fix
+    private double sumX, sumY, sumC, sumS;         // sums over the disagreeing frames' fixes (heading as cos, sin)
 
     public EkfPoseFilter(LocalizationConfig c) {
         qPos = c.ekfPositionNoise() * c.ekfPositionNoise();
@@ -71,11 +72,17 @@ public final class EkfPoseFilter implements PoseFilter {
             boolean near = badFrames > 0 && Math.hypot(fix.x() - lastBadX, fix.y() - lastBadY) <= spreadMetres
                     && Math.abs(Angles.difference(fix.thetaDeg(), lastBadDeg)) <= spreadDeg;
             badFrames = near ? badFrames + 1 : 1;
+            if (badFrames == 1) sumX = sumY = sumC = sumS = 0;
             lastBadX = fix.x();
             lastBadY = fix.y();
             lastBadDeg = fix.thetaDeg();
+            sumX += fix.x();
+            sumY += fix.y();
+            sumC += Math.cos(Math.toRadians(fix.thetaDeg()));
+            sumS += Math.sin(Math.toRadians(fix.thetaDeg()));
             if (badFrames < relocateFrames) return false;
-            start(fix);
+            // Re-initialised at the mean of the disagreeing frames' fixes (they agree with each other).
+            start(new Pose2(sumX / badFrames, sumY / badFrames, Math.toDegrees(Math.atan2(sumS, sumC))));
             return true;
         }
         if (fix != null) badFrames = 0;   // the fix agrees with the belief (or a landmark does)

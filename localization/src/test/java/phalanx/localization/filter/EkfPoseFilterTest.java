@@ -107,7 +107,8 @@ class EkfPoseFilterTest {
             assertEquals(-4, f.pose().x(), 0.02, "not yet");
         }
         assertTrue(f.update(new Pose2(-2.03, 3.01, 30.2), see(b, new Random(60), 0.01, FOUR)));
-        assertEquals(-2.03, f.pose().x(), 1e-9, "re-initialised at the fix");
+        assertEquals(-2.015, f.pose().x(), 1e-9, "re-initialised at the mean of the two disagreeing frames' fixes");
+        assertEquals(30.1, f.pose().thetaDeg(), 1e-9);
         assertEquals(2, f.starts());
         for (int i = 0; i < 20; i++) f.update(b, see(b, new Random(70 + i), 0.01, FOUR));
         assertEquals(-2, f.pose().x(), 0.02);
