@@ -271,13 +271,14 @@ class LocalizeEvalPerRecordingTest {
                     assertEquals(0, r.selfOver1m(), what);
                     assertEquals(List.of(), LocalizeEval.Limits.ISSUE_19.broken(r), what);
                 }
-                // Not worse (the before figures are rounded to the printed digits). The EKF's S6 ball p95
-                // rose from 0.025 to 0.037 m: the ball queue restarts one frame earlier, from poses the
-                // re-initialised EKF has not refined yet, and the head pan then hides the ball.
+                // Not worse (the before figures are rounded to the printed digits), except the ball p95 of
+                // two moved recordings by less than 1 cm: EKF S6 0.025 -> 0.033 m, FIFO S4_agent2 0.021 ->
+                // 0.024 m (the ball belief restarts at the re-initialisation from a pose taken from two
+                // fixes; in S6 the head pan then hides the ball, so those sightings stay for 1 s).
                 assertTrue(r.selfP95() <= before[i][1] + 0.0005, what + ": self p95, before " + before[i][1]);
                 assertTrue(r.thetaP95() <= before[i][2] + 0.005, what + ": heading p95, before " + before[i][2]);
                 assertTrue(r.ballMedian() <= before[i][3] + 0.0005, what + ": ball median, before " + before[i][3]);
-                assertTrue(r.ballP95() <= Math.min(before[i][4] + 0.015, 0.6), what + ": ball p95, before " + before[i][4]);
+                assertTrue(r.ballP95() <= Math.min(before[i][4] + 0.01, 0.6), what + ": ball p95, before " + before[i][4]);
             }
         }
     }
