@@ -70,6 +70,13 @@ public final class LocalizeEval {
     /** The ball figures count a cycle only if a vision frame showed the ball within this many seconds. */
     public static final double BALL_VIEW_SECONDS = 1.0;
 
+    /**
+     * A move (beam, trainer or referee): the true torso jumps at least this far between two lines; walking
+     * moves it about 0.01 m per cycle. After each the "recover" column counts the cycles (lines) from the
+     * move until the self error is first at most {@link #RECOVERED_METRES} again (issue 19).
+     */
+    public static final double MOVE_METRES = 1.0, RECOVERED_METRES = 1.0;
+
     /** The errors of one or more recordings. */
     public static final class Result {
         final String name;
@@ -77,7 +84,10 @@ public final class LocalizeEval {
         final List<Double> self = new ArrayList<>(), theta = new ArrayList<>(), ball = new ArrayList<>(),
                 ballAll = new ArrayList<>(), fallenSelf = new ArrayList<>();
         final List<Cycle> cycleLog = new ArrayList<>();
-        long cycles, malformed, fallenCycles, vision, fixes, selfOver1m;
+        long cycles, malformed, fallenCycles, vision, fixes, selfOver1m, moves;
+        /** Most cycles any move took to recover (-1: no move); the move under way and its cycles so far. */
+        int recoverMax = -1, recovering = -1;
+        private double lastX = Double.NaN, lastY = Double.NaN;
         final List<BeliefStats> stats = new ArrayList<>();
 
         Result(String name) { this.name = name; }
@@ -85,6 +95,24 @@ public final class LocalizeEval {
         /** Counts one cycle (the replay calls this once per perceptor line that parsed). */
         void observe(Cycle c) {
             cycleLog.add(c);
+            GroundTruth.Line g = c.truth();
+            if (g.hasTorso()) {
+                if (Double.isFinite(lastX) && Math.hypot(g.x() - lastX, g.y() - lastY) >= MOVE_METRES) {
+                    moves++;
+                    if (recovering >= 0) recoverMax = Math.max(recoverMax, recovering);
+                    recovering = 0;
+                }
+                lastX = g.x();
+                lastY = g.y();
+            }
+            if (recovering >= 0) {
+                if (c.selfError() <= RECOVERED_METRES) {
+                    recoverMax = Math.max(recoverMax, recovering);
+                    recovering = -1;
+                } else {
+                    recovering++;
+                }
+            }
             if (c.fallen()) fallenCycles++;
             double e = c.selfError();
             if (Double.isFinite(e)) {
@@ -107,6 +135,8 @@ public final class LocalizeEval {
             fallenSelf.addAll(r.fallenSelf);
             cycles += r.cycles; malformed += r.malformed; fallenCycles += r.fallenCycles;
             vision += r.vision; fixes += r.fixes; selfOver1m += r.selfOver1m; stats.addAll(r.stats);
+            moves += r.moves;
+            recoverMax = Math.max(recoverMax, r.recoverCycles());
         }
 
         public String name() { return name; }
@@ -125,6 +155,13 @@ public final class LocalizeEval {
         /** Upright cycles whose self error is above 1 m. */
         public long selfOver1m() { return selfOver1m; }
         public List<BeliefStats> stats() { return stats; }
+        /** Moves of the true torso by {@link #MOVE_METRES} or more from one line to the next. */
+        public long moves() { return moves; }
+        /**
+         * The most cycles, over the moves, from a move's first line until the self error is at most
+         * {@link #RECOVERED_METRES} (a move not recovered by the end counts to the end); -1 without a move.
+         */
+        public int recoverCycles() { return Math.max(recoverMax, recovering); }
         /** Every cycle of a single recording, in order (empty for a pooled result). */
         public List<Cycle> cycleLog() { return cycleLog; }
 
@@ -341,15 +378,16 @@ public final class LocalizeEval {
         return all;
     }
 
-    static final String TABLE_HEADER = String.format(Locale.ROOT, "%-10s %6s %6s %8s %8s %8s %8s %6s %8s %8s %8s %8s %7s",
+    static final String TABLE_HEADER = String.format(Locale.ROOT, "%-10s %6s %6s %8s %8s %8s %8s %6s %8s %8s %8s %8s %7s %5s %7s",
             "recording", "cycles", "self_n", "self_med", "self_p95", "self_max", "hdg_p95", "ball_n", "ball_med",
-            "ball_p95", "ball_max", "fix_rate", "self>1m");
+            "ball_p95", "ball_max", "fix_rate", "self>1m", "moves", "recover");
 
     /** One table line: metres, heading in degrees; ball over cycles with the ball in view in the last second. */
     static String row(Result r) {
-        return String.format(Locale.ROOT, "%-10s %6d %6d %8.3f %8.3f %8.3f %8.2f %6d %8.3f %8.3f %8.3f %8.3f %7d",
+        return String.format(Locale.ROOT, "%-10s %6d %6d %8.3f %8.3f %8.3f %8.2f %6d %8.3f %8.3f %8.3f %8.3f %7d %5d %7s",
                 r.name, r.cycles, r.self.size(), r.selfMedian(), r.selfP95(), r.selfMax(), r.thetaP95(),
-                r.ball.size(), r.ballMedian(), r.ballP95(), r.ballMax(), r.fixRate(), r.selfOver1m);
+                r.ball.size(), r.ballMedian(), r.ballP95(), r.ballMax(), r.fixRate(), r.selfOver1m, r.moves,
+                recover(r));
     }
 
     /** One filter's block: header, one line per recording, the pooled line, the breaks, the worst cycles. */
@@ -397,30 +435,35 @@ public final class LocalizeEval {
     }
 
     static final String[] TSV_HEADER = {"filter", "recording", "cycles", "self_n", "self_median_m", "self_p95_m", "self_max_m",
-            "heading_p95_deg", "ball_n", "ball_median_m", "ball_p95_m", "ball_max_m", "fix_rate", "self_over_1m", "breaks"};
+            "heading_p95_deg", "ball_n", "ball_median_m", "ball_p95_m", "ball_max_m", "fix_rate", "self_over_1m", "moves", "recover_cycles", "breaks"};
 
     static String tsvRow(String label, Result r) {
         List<String> b = Limits.ISSUE_19.broken(r);
         return String.join("\t", label, r.name, Long.toString(r.cycles), Integer.toString(r.self.size()),
                 f3(r.selfMedian()), f3(r.selfP95()), f3(r.selfMax()), String.format(Locale.ROOT, "%.2f", r.thetaP95()),
                 Integer.toString(r.ball.size()), f3(r.ballMedian()), f3(r.ballP95()), f3(r.ballMax()), f3(r.fixRate()),
-                Long.toString(r.selfOver1m), b.isEmpty() ? "-" : String.join(",", b));
+                Long.toString(r.selfOver1m), Long.toString(r.moves), recover(r), b.isEmpty() ? "-" : String.join(",", b));
     }
+
+    /** The recover figure: cycles, or "-" without a move. */
+    static String recover(Result r) { return r.recoverCycles() < 0 ? "-" : Integer.toString(r.recoverCycles()); }
 
     private static String f3(double v) { return String.format(Locale.ROOT, "%.3f", v); }
     private static String num1(double v) { return String.format(Locale.ROOT, "%.1f", v); }
 
     private static void detail(PrintStream out, Result r) {
-        long noVision = 0, none = 0, one = 0, bad = 0, noId = 0, fallenFrames = 0;
+        long noVision = 0, none = 0, one = 0, bad = 0, noId = 0, fallenFrames = 0, starts = 0;
         for (BeliefStats s : r.stats) {
             noVision += s.noVision(); none += s.noLandmark(); one += s.oneLandmark(); bad += s.badPolar();
-            noId += s.playerWithoutId(); fallenFrames += s.fallenFrames();
+            noId += s.playerWithoutId(); fallenFrames += s.fallenFrames(); starts += s.selfStarts();
         }
         out.printf(Locale.ROOT, "%-10s skipped: no_vision=%d no_landmark=%d one_landmark=%d bad_distance=%d"
                         + " player_without_id=%d malformed=%d | fallen: %d cycles (torso > 45 deg), %d vision frames skipped (falling, down or shaken),"
-                        + " self error while down median %.3f m (%d cycles, not in the figures above) | ball over every cycle with a belief: median %.3f p95 %.3f m (%d cycles)%n",
+                        + " self error while down median %.3f m (%d cycles, not in the figures above) | ball over every cycle with a belief: median %.3f p95 %.3f m (%d cycles)"
+                        + " | self filter starts %d (the first and every re-initialisation)%n",
                 r.name, noVision, none, one, bad, noId, r.malformed, r.fallenCycles, fallenFrames,
-                quantile(r.fallenSelf, 0.5), r.fallenSelf.size(), quantile(r.ballAll, 0.5), quantile(r.ballAll, 0.95), r.ballAll.size());
+                quantile(r.fallenSelf, 0.5), r.fallenSelf.size(), quantile(r.ballAll, 0.5), quantile(r.ballAll, 0.95), r.ballAll.size(),
+                starts);
     }
 
     private static void summary(PrintStream out, Result r) {

@@ -70,9 +70,11 @@ class LocalizeEvalPerRecordingTest {
         assertEquals(1, r.selfOver1m());
         assertEquals(5.0 / 7, r.fixRate(), 1e-12);
         assertEquals(21, r.cycles());
+        assertEquals(0, r.moves(), "the true torso never moves");
+        assertEquals(-1, r.recoverCycles());
 
         String row = LocalizeEval.row(r);
-        assertEquals(List.of("SYN", "21", "20", "0.100", "0.190", "2.000", "19.00", "10", "0.200", "0.400", "0.400", "0.714", "1"),
+        assertEquals(List.of("SYN", "21", "20", "0.100", "0.190", "2.000", "19.00", "10", "0.200", "0.400", "0.400", "0.714", "1", "0", "-"),
                 Arrays.asList(row.trim().split("\\s+")), row);
         assertEquals(LocalizeEval.TABLE_HEADER.trim().split("\\s+").length, row.trim().split("\\s+").length, "one column per header");
 
@@ -193,6 +195,91 @@ class LocalizeEvalPerRecordingTest {
             if (c.k() >= 316 && c.k() <= 366) assertTrue(c.ballInView(), "seen at line 316, counted for 1 s: " + c.k());
             if (c.k() >= 368 && c.k() <= 408) assertFalse(c.ballInView(), "more than 1 s after the last sighting: " + c.k());
             if (c.k() >= 409 && c.k() <= 420) assertTrue(c.ballInView(), "seen again from line 409: " + c.k());
+        }
+    }
+
+    /** Truth at (tx, 0), belief at (bx, 0), heading 0, ball right under the truth. */
+    private static LocalizeEval.Cycle at(int k, double tx, double bx) {
+        GroundTruth.Line g = new GroundTruth.Line(0.02 * k, tx, 0, 0.38, UPRIGHT, 0, tx, 0, 0.04);
+        return new LocalizeEval.Cycle(k, g, false, new Pose2(bx, 0, 0), new Vector2(bx, 0), true);
+    }
+
+    /**
+     * A move of 3 m at line 6, the belief following at line 10: 4 cycles over 1 m, recover = 4. A second
+     * move at line 20 followed at once (its first line already within 1 m): 0. The pooled line adds the
+     * moves and keeps the largest recovery.
+     */
+    @Test
+    void movesAndTheCyclesToRecoverByHand() {
+        LocalizeEval.Result r = new LocalizeEval.Result("MOVE");
+        for (int k = 1; k <= 5; k++) r.observe(at(k, 0, 0));
+        for (int k = 6; k <= 9; k++) r.observe(at(k, 3, 0));
+        for (int k = 10; k <= 19; k++) r.observe(at(k, 3, 3));
+        r.observe(at(20, 1.5, 1.0));
+        for (int k = 21; k <= 25; k++) r.observe(at(k, 1.5, 1.5));
+        assertEquals(2, r.moves());
+        assertEquals(4, r.recoverCycles());
+        assertEquals(4, r.selfOver1m());
+        String[] row = LocalizeEval.row(r).trim().split("\\s+");
+        assertEquals("2", row[row.length - 2]);
+        assertEquals("4", row[row.length - 1]);
+
+        LocalizeEval.Result open = new LocalizeEval.Result("OPEN");
+        open.observe(at(1, 0, 0));
+        for (int k = 2; k <= 8; k++) open.observe(at(k, 5, 0));
+        assertEquals(7, open.recoverCycles(), "not recovered by the end: counted to the end");
+        LocalizeEval.Result all = LocalizeEval.pooled(List.of(r, open, synthetic()));
+        assertEquals(3, all.moves());
+        assertEquals(7, all.recoverCycles());
+    }
+
+    /**
+     * Issue 19 over the real recordings: the trainer moves of S2, S4_agent2 and S6 are the only moves and
+     * the only re-initialisations; each filter follows them in fewer cycles over 1 m than before the
+     * relocation (bench localize at bec8b7b: FIFO 19, 34, 30; EKF 7, 13, 9), at most 10 cycles (S4_agent2:
+     * two of its frames after the move are skipped as shaken); S6's FIFO ball p95 is no longer 9.29 m;
+     * and no recording's figures get worse than at bec8b7b (localization/README.md, "Per recording").
+     */
+    @Test
+    void theRecordedMovesAreFollowedFasterAndNothingElseGetsWorse() throws IOException {
+        assumeTrue(Recordings.dir().isPresent(), Recordings.missingMessage());
+        String[] names = {"S1", "S2", "S3", "S4_agent1", "S4_agent2", "S5_agent1", "S5_agent7", "S6"};
+        // Before (bec8b7b), per filter and recording: cycles over 1 m, self p95, heading p95, ball median, ball p95.
+        double[][] fifo = {
+                {0, 0.034, 0.10, 0.008, 0.023}, {19, 0.031, 0.10, 0.007, 0.015}, {0, 0.144, 0.08, 0.006, 0.009},
+                {0, 0.035, 0.09, 0.010, 0.037}, {34, 0.037, 0.09, 0.009, 0.021}, {0, 0.041, 0.11, 0.012, 0.031},
+                {0, 0.033, 0.09, 0.007, 0.025}, {30, 0.039, 0.13, 0.008, 9.290}};
+        double[][] ekf = {
+                {0, 0.025, 0.20, 0.006, 0.022}, {7, 0.017, 0.15, 0.005, 0.014}, {0, 0.160, 0.12, 0.004, 0.014},
+                {0, 0.025, 0.15, 0.009, 0.031}, {13, 0.016, 0.15, 0.008, 0.025}, {0, 0.024, 0.16, 0.009, 0.027},
+                {0, 0.021, 0.17, 0.005, 0.020}, {9, 0.024, 0.19, 0.007, 0.025}};
+        for (LocalizationConfig.Filter f : LocalizationConfig.Filter.values()) {
+            double[][] before = f == LocalizationConfig.Filter.FIFO ? fifo : ekf;
+            for (int i = 0; i < names.length; i++) {
+                LocalizeEval.Result r = LocalizeEval.run(Recordings.named(names[i]), LocalizationConfig.DEFAULT.withFilter(f));
+                String what = f + " " + names[i] + ": " + LocalizeEval.row(r);
+                boolean moved = before[i][0] > 0;
+                assertEquals(moved ? 1 : 0, r.moves(), what);
+                long starts = r.stats().stream().mapToLong(phalanx.localization.belief.BeliefStats::selfStarts).sum();
+                assertEquals(1 + r.moves(), starts, what + ": re-initialised at the move only");
+                if (moved) {
+                    assertTrue(r.selfOver1m() < before[i][0], what + ": cycles over 1 m, before " + (int) before[i][0]);
+                    assertTrue(r.recoverCycles() <= 10, what);
+                    assertEquals(List.of("self_max"), LocalizeEval.Limits.ISSUE_19.broken(r),
+                            what + ": only the move itself (the belief is the old pose until the next frames) breaks a limit");
+                } else {
+                    assertEquals(0, r.selfOver1m(), what);
+                    assertEquals(List.of(), LocalizeEval.Limits.ISSUE_19.broken(r), what);
+                }
+                // Not worse (the before figures are rounded to the printed digits), except the ball p95 of
+                // two moved recordings by less than 1 cm: EKF S6 0.025 -> 0.033 m, FIFO S4_agent2 0.021 ->
+                // 0.024 m (the ball belief restarts at the re-initialisation from a pose taken from two
+                // fixes; in S6 the head pan then hides the ball, so those sightings stay for 1 s).
+                assertTrue(r.selfP95() <= before[i][1] + 0.0005, what + ": self p95, before " + before[i][1]);
+                assertTrue(r.thetaP95() <= before[i][2] + 0.005, what + ": heading p95, before " + before[i][2]);
+                assertTrue(r.ballMedian() <= before[i][3] + 0.0005, what + ": ball median, before " + before[i][3]);
+                assertTrue(r.ballP95() <= Math.min(before[i][4] + 0.01, 0.6), what + ": ball p95, before " + before[i][4]);
+            }
         }
     }
 }

@@ -6,7 +6,7 @@ package phalanx.localization.belief;
  */
 public final class BeliefStats {
     long cycles, visionFrames, selfFixes, selfUpdates, noVision, noLandmark, oneLandmark, badPolar,
-            playerWithoutId, fallenFrames, noSide;
+            playerWithoutId, fallenFrames, noSide, selfStarts;
 
     public long cycles() { return cycles; }
     /** Cycles that carried a See. */
@@ -15,6 +15,11 @@ public final class BeliefStats {
     public long selfFixes() { return selfFixes; }
     /** Vision frames where the filter took the frame (the rest were outliers or had no landmarks). */
     public long selfUpdates() { return selfUpdates; }
+    /**
+     * Times the self filter began a belief: the first fix, then every re-initialisation (relocation after
+     * a move, a FIFO queue emptied by refusals, a start after {@code forgetPose}); each drops the ball.
+     */
+    public long selfStarts() { return selfStarts; }
     public long noVision() { return noVision; }
     public long noLandmark() { return noLandmark; }
     public long oneLandmark() { return oneLandmark; }
@@ -33,6 +38,6 @@ public final class BeliefStats {
         return "cycles=" + cycles + " vision=" + visionFrames + " fixes=" + selfFixes + " updates=" + selfUpdates
                 + " no_vision=" + noVision + " no_landmark=" + noLandmark + " one_landmark=" + oneLandmark
                 + " bad_polar=" + badPolar + " player_without_id=" + playerWithoutId
-                + " fallen_frames=" + fallenFrames + " no_side=" + noSide;
+                + " fallen_frames=" + fallenFrames + " no_side=" + noSide + " self_starts=" + selfStarts;
     }
 }

@@ -64,6 +64,8 @@ public final class BeliefStore {
     private final TiltEstimator tilt;
     private double lastTime = Double.NaN;
     private double odoForward, odoLeft, odoTurn;
+    /** The self filter has had a belief since this store was made: a further start is a re-initialisation. */
+    private boolean selfStarted;
     private Vector2 ballRelative;
     private List<PlayerBelief> mateList = List.of(), otherList = List.of();
     private WorldBelief belief;
@@ -106,6 +108,17 @@ public final class BeliefStore {
         ballFilter.clear();
         ballTracker.clear();
         selfTime = Double.NEGATIVE_INFINITY;
+    }
+
+    /**
+     * The self belief was re-initialised: the filtered ball, its track and the last relative sighting
+     * (taken before the move) are dropped; the next sighting is accepted wherever it is.
+     */
+    private void dropBall() {
+        ballFilter.clear();
+        ballTracker.clear();
+        ballRelative = null;
+        ballTime = Double.NEGATIVE_INFINITY;
     }
 
     /** One cycle: every perception the server sent, in order. Never throws on odd content. */
@@ -183,18 +196,20 @@ public final class BeliefStore {
         } else if (side != null) {
             Pose2 fix = localizer.locate(sightings);
             if (fix != null) stats.selfFixes++;
-            Pose2 before = selfFilter.pose();
+            int starts = selfFilter.starts();
             if (selfFilter.update(fix, sightings)) {
                 stats.selfUpdates++;
                 selfTime = time;
-                Pose2 after = selfFilter.pose();
-                // The filter restarted somewhere else (beam, trainer move): ball positions placed
-                // with the old pose are wrong by the same jump.
-                if (before != null && after != null
-                        && before.position().distanceTo(after.position()) > config.selfAgreementMetres()) {
-                    ballFilter.clear();
-                    ballTracker.clear();
-                }
+            }
+            // A new self belief (the first, a restart after the FIFO's queue emptied, a relocation
+            // after a beam or trainer move): every ball position was placed with the old pose, or with
+            // none, and is dropped; this frame's ball sighting then starts the ball belief afresh.
+            // (Before issue 19 the ball was cleared only on a jump between two poses, which a FIFO
+            // queue emptied by refusals never shows: S6 kept the old ball for 2.4 s.)
+            if (selfFilter.starts() != starts) {
+                stats.selfStarts++;
+                if (selfStarted) dropBall();
+                selfStarted = true;
             }
         }
         Pose2 self = selfFilter.pose();

@@ -11,9 +11,13 @@ import java.util.List;
  * Beyond the thesis (its future work asks for a probabilistic localization): an extended Kalman
  * filter over (x, y, theta). Prediction: the walk's odometry plus process noise every cycle.
  * Correction: every seen landmark on its own (so one landmark helps too), the measurement being
- * the landmark's ground vector in the body frame; a Mahalanobis gate drops outliers. Started, and
- * restarted after {@code ekfResetFrames} frames whose landmarks all fail the gate (beam, trainer
- * move), from the pair-triangulation fix. Plain doubles, no allocation per cycle.
+ * the landmark's ground vector in the body frame; a Mahalanobis gate drops outliers. Started from
+ * the pair-triangulation fix, and re-started from the mean of their fixes (relocation, issue 19) after
+ * {@code relocateFrames} vision frames in a row that disagree with the belief: every landmark outside
+ * the gate and the fix farther than {@code relocateMetres}/{@code relocateDeg} from the belief, each
+ * fix within {@code relocateSpread*} of the one before (beam, trainer or referee move). A frame whose fix
+ * is near the belief, or with a landmark inside the gate, ends the count; a frame without a fix leaves
+ * it. Plain doubles, no allocation per cycle.
  */
 public final class EkfPoseFilter implements PoseFilter {
     /** chi-square, 2 degrees of freedom, 99.9 %. */
@@ -22,19 +26,24 @@ public final class EkfPoseFilter implements PoseFilter {
     private static final double SIGMA_FLOOR = 0.02, SIGMA_ALONG = 0.004, SIGMA_ACROSS_RAD = Math.toRadians(0.4);
 
     private final double qPos, qAng;
-    private final int resetFrames;
-    private final double resetMetres;
+    private final int relocateFrames;
+    private final double relocateMetres, relocateDeg, spreadMetres, spreadDeg;
     private boolean valid;
     private double x, y, t;                       // t in radians
     private double p00, p01, p02, p11, p12, p22;  // symmetric covariance
-    private int badFrames;
+    private int badFrames, starts;
+    private double lastBadX, lastBadY, lastBadDeg; // the previous disagreeing frame's fix
+    private double sumX, sumY, sumC, sumS;         // sums over the disagreeing frames' fixes (heading as cos, sin)
 
     public EkfPoseFilter(LocalizationConfig c) {
         qPos = c.ekfPositionNoise() * c.ekfPositionNoise();
         double a = Math.toRadians(c.ekfAngleNoiseDeg());
         qAng = a * a;
-        resetFrames = c.ekfResetFrames();
-        resetMetres = c.selfAgreementMetres();
+        relocateFrames = c.relocateFrames();
+        relocateMetres = c.relocateMetres();
+        relocateDeg = c.relocateDeg();
+        spreadMetres = c.relocateSpreadMetres();
+        spreadDeg = c.relocateSpreadDeg();
     }
 
     @Override public void predict(double forward, double left, double turnDeg) {
@@ -56,21 +65,41 @@ public final class EkfPoseFilter implements PoseFilter {
             start(fix);
             return true;
         }
+        boolean far = fix != null && (Math.hypot(fix.x() - x, fix.y() - y) > relocateMetres
+                || Math.abs(Angles.difference(fix.thetaDeg(), Math.toDegrees(t))) > relocateDeg);
+        if (far && !anyInGate(seen)) {
+            // The whole frame disagrees with the belief: count it towards a relocation, change nothing.
+            boolean near = badFrames > 0 && Math.hypot(fix.x() - lastBadX, fix.y() - lastBadY) <= spreadMetres
+                    && Math.abs(Angles.difference(fix.thetaDeg(), lastBadDeg)) <= spreadDeg;
+            badFrames = near ? badFrames + 1 : 1;
+            if (badFrames == 1) sumX = sumY = sumC = sumS = 0;
+            lastBadX = fix.x();
+            lastBadY = fix.y();
+            lastBadDeg = fix.thetaDeg();
+            sumX += fix.x();
+            sumY += fix.y();
+            sumC += Math.cos(Math.toRadians(fix.thetaDeg()));
+            sumS += Math.sin(Math.toRadians(fix.thetaDeg()));
+            if (badFrames < relocateFrames) return false;
+            // Re-initialised at the mean of the disagreeing frames' fixes (they agree with each other).
+            start(new Pose2(sumX / badFrames, sumY / badFrames, Math.toDegrees(Math.atan2(sumS, sumC))));
+            return true;
+        }
+        if (fix != null) badFrames = 0;   // the fix agrees with the belief (or a landmark does)
         int used = 0;
-        for (int k = 0; k < seen.size(); k++) if (correct(seen.get(k))) used++;
-        if (used > 0) {
-            badFrames = 0;
-            return true;
-        }
-        if (fix != null && Math.hypot(fix.x() - x, fix.y() - y) > resetMetres && ++badFrames >= resetFrames) {
-            start(fix);
-            return true;
-        }
+        for (int k = 0; k < seen.size(); k++) if (correct(seen.get(k), true)) used++;
+        if (used > 0) badFrames = 0;
+        return used > 0;
+    }
+
+    private boolean anyInGate(List<LandmarkSighting> seen) {
+        for (int k = 0; k < seen.size(); k++) if (correct(seen.get(k), false)) return true;
         return false;
     }
 
     private void start(Pose2 fix) {
         valid = true;
+        starts++;
         badFrames = 0;
         x = fix.x();
         y = fix.y();
@@ -80,8 +109,11 @@ public final class EkfPoseFilter implements PoseFilter {
         p01 = p02 = p12 = 0;
     }
 
-    /** One landmark: z = R(-t) (L - p), measured as the sighting's relative vector. */
-    private boolean correct(LandmarkSighting l) {
+    /**
+     * One landmark: z = R(-t) (L - p), measured as the sighting's relative vector. Returns whether it
+     * passes the gate; only with {@code apply} does it correct the state.
+     */
+    private boolean correct(LandmarkSighting l, boolean apply) {
         double c = Math.cos(t), s = Math.sin(t);
         double dx = l.position().x() - x, dy = l.position().y() - y;
         double h1 = c * dx + s * dy, h2 = -s * dx + c * dy;
@@ -108,6 +140,7 @@ public final class EkfPoseFilter implements PoseFilter {
         double e1 = z1 - h1, e2 = z2 - h2;
         double d2 = e1 * (i00 * e1 + i01 * e2) + e2 * (i01 * e1 + i11 * e2);
         if (!(d2 <= GATE)) return false;
+        if (!apply) return true;
         // K = P H^T S^-1 (3x2)
         double k00 = ph00 * i00 + ph01 * i01, k01 = ph00 * i01 + ph01 * i11;
         double k10 = ph10 * i00 + ph11 * i01, k11 = ph10 * i01 + ph11 * i11;
@@ -133,5 +166,10 @@ public final class EkfPoseFilter implements PoseFilter {
     /** Standard deviation of the position, metres (NaN before the first fix). */
     public double positionSigma() { return valid ? Math.sqrt(Math.max(0, p00 + p11)) : Double.NaN; }
 
-    @Override public void reset() { valid = false; }
+    @Override public int starts() { return starts; }
+
+    @Override public void reset() {
+        valid = false;
+        badFrames = 0;
+    }
 }

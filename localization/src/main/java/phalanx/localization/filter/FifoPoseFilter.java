@@ -6,12 +6,18 @@ import phalanx.localization.vision.LandmarkSighting;
 
 import java.util.List;
 
-/** The thesis's self filter (4.4.3, Algorithm 1) over pair-triangulation fixes. */
+/**
+ * The thesis's self filter (4.4.3, Algorithm 1) over pair-triangulation fixes, with one documented
+ * addition (issue 19, not in the thesis): relocation. {@code relocateFrames} refused fixes in a row, each
+ * farther than {@code relocateMetres}/{@code relocateDeg} from the belief and within
+ * {@code relocateSpread*} of the one before, replace the queue (see {@link LocalizationFilter}).
+ */
 public final class FifoPoseFilter implements PoseFilter {
     private final LocalizationFilter fifo;
 
     public FifoPoseFilter(LocalizationConfig c) {
-        fifo = new LocalizationFilter(c.fifoMaxSize(), c.selfAgreementMetres(), c.selfAgreementDeg());
+        fifo = new LocalizationFilter(c.fifoMaxSize(), c.selfAgreementMetres(), c.selfAgreementDeg(),
+                c.relocateFrames(), c.relocateMetres(), c.relocateDeg(), c.relocateSpreadMetres(), c.relocateSpreadDeg());
     }
 
     @Override public void predict(double forward, double left, double turnDeg) {
@@ -25,6 +31,8 @@ public final class FifoPoseFilter implements PoseFilter {
     @Override public Pose2 pose() { return fifo.pose(); }
 
     @Override public double confidence() { return (double) fifo.size() / fifo.maxSize(); }
+
+    @Override public int starts() { return fifo.starts(); }
 
     @Override public void reset() { fifo.clear(); }
 }

@@ -11,6 +11,13 @@ import phalanx.model.field.Vector2;
  * Used for the self pose (with orientation) and for the ball (position only: angle check off).
  * Beyond the thesis: {@link #shift} moves the queued estimates by the robot's own motion
  * (odometry), so walking does not make the average lag. Fixed arrays, no allocation per update.
+ * <p>
+ * Also beyond the thesis, and off unless a relocation count is given (the self filter turns it on, the
+ * ball's stays the thesis's): <b>relocation</b>. When {@code relocateFrames} refused estimates in a row
+ * are each farther than {@code relocateMetres} (or {@code relocateDeg}) from the average and each within
+ * {@code spreadMetres} ({@code spreadDeg}) of the one before, the queue is replaced by them: the robot
+ * was moved (beam, trainer or referee). Algorithm 1 alone needs MaxSize refusals before its queue is
+ * empty and a new belief can start (issue 19). Accepted or near estimates reset the count.
  */
 public final class LocalizationFilter {
     private final int maxSize;
@@ -18,13 +25,38 @@ public final class LocalizationFilter {
     private final boolean withAngle;
     private final double[] xs, ys, ts;
     private int head, size;
-    private int accepted, rejected;
+    private int accepted, rejected, starts, relocations;
+    /** Relocation (off when relocateFrames is 0) and the refused estimates counted towards it, oldest first. */
+    private final int relocateFrames;
+    private final double relocateMetres, relocateDeg, spreadMetres, spreadDeg;
+    private final double[] px, py, pt;
+    private int pending;
 
     /**
      * @param agreeDeg the orientation agreement threshold; NaN for position-only estimates (the ball)
      */
     public LocalizationFilter(int maxSize, double agreeMetres, double agreeDeg) {
+        this(maxSize, agreeMetres, agreeDeg, 0, Double.NaN, Double.NaN, Double.NaN, Double.NaN);
+    }
+
+    /**
+     * Algorithm 1 with relocation (class comment): after {@code relocateFrames} refused estimates in a row,
+     * far from the average and close to each other, the queue restarts from them. 0 frames: the thesis's filter.
+     * The angle thresholds are ignored for position-only estimates (agreeDeg NaN).
+     */
+    public LocalizationFilter(int maxSize, double agreeMetres, double agreeDeg, int relocateFrames,
+                              double relocateMetres, double relocateDeg, double spreadMetres, double spreadDeg) {
         if (maxSize < 1) throw new IllegalArgumentException("maxSize must be at least 1");
+        if (relocateFrames < 0) throw new IllegalArgumentException("relocateFrames must be 0 (off) or more");
+        this.relocateFrames = Math.min(relocateFrames, maxSize);
+        this.relocateMetres = relocateMetres;
+        this.relocateDeg = relocateDeg;
+        this.spreadMetres = spreadMetres;
+        this.spreadDeg = spreadDeg;
+        int n = Math.max(1, this.relocateFrames);
+        px = new double[n];
+        py = new double[n];
+        pt = new double[n];
         this.maxSize = maxSize;
         this.agreeMetres = agreeMetres;
         this.agreeDeg = agreeDeg;
@@ -47,10 +79,35 @@ public final class LocalizationFilter {
     private boolean add(double x, double y, double t) {
         if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(t)) return false;
         if (size > 0 && !agrees(x, y, t)) {
+            boolean far = relocateFrames > 0 && far(x, y, t);
             removeOldest();                     // Algorithm 1, line 8
             rejected++;
-            return false;
+            if (!far) {
+                pending = 0;
+                return false;
+            }
+            // Relocation (not in the thesis): count this refusal if it agrees with the one before.
+            if (pending > 0 && !nearLastPending(x, y, t)) pending = 0;
+            px[pending] = x;
+            py[pending] = y;
+            pt[pending] = t;
+            if (++pending < relocateFrames) return false;
+            head = 0;
+            size = 0;
+            for (int k = 0; k < pending; k++) {
+                xs[k] = px[k];
+                ys[k] = py[k];
+                ts[k] = pt[k];
+            }
+            size = pending;
+            pending = 0;
+            starts++;
+            relocations++;
+            accepted++;
+            return true;
         }
+        pending = 0;
+        if (size == 0) starts++;                // a new belief: the first, or after refusals emptied the queue
         if (size == maxSize) removeOldest();    // lines 10-11
         int i = (head + size) % maxSize;        // line 13
         xs[i] = x;
@@ -65,6 +122,18 @@ public final class LocalizationFilter {
         double mx = meanX(), my = meanY();
         if (Math.hypot(x - mx, y - my) > agreeMetres) return false;
         return !withAngle || Math.abs(Angles.difference(t, meanTheta())) <= agreeDeg;
+    }
+
+    /** Farther than the relocation thresholds from the average (the angle only with orientation). */
+    private boolean far(double x, double y, double t) {
+        if (Math.hypot(x - meanX(), y - meanY()) > relocateMetres) return true;
+        return withAngle && Math.abs(Angles.difference(t, meanTheta())) > relocateDeg;
+    }
+
+    private boolean nearLastPending(double x, double y, double t) {
+        int j = pending - 1;
+        if (Math.hypot(x - px[j], y - py[j]) > spreadMetres) return false;
+        return !withAngle || Math.abs(Angles.difference(t, pt[j])) <= spreadDeg;
     }
 
     private void removeOldest() {
@@ -85,6 +154,12 @@ public final class LocalizationFilter {
             ys[i] += s * forward + c * left;
             ts[i] = Angles.normalize(ts[i] + turnDeg);
         }
+        for (int k = 0; k < pending; k++) {
+            double r = Math.toRadians(pt[k]), c = Math.cos(r), s = Math.sin(r);
+            px[k] += c * forward - s * left;
+            py[k] += s * forward + c * left;
+            pt[k] = Angles.normalize(pt[k] + turnDeg);
+        }
     }
 
     /** Moves every queued position by a displacement (a ball observed to roll). */
@@ -101,7 +176,13 @@ public final class LocalizationFilter {
     public int maxSize() { return maxSize; }
     public int accepted() { return accepted; }
     public int rejected() { return rejected; }
-    public void clear() { size = 0; }
+    /** Times a belief began: the first estimate, one after refusals emptied the queue, a relocation. */
+    public int starts() { return starts; }
+    /** Times the queue was replaced by relocation (a subset of {@link #starts}). */
+    public int relocations() { return relocations; }
+    /** Refused estimates counted towards a relocation so far (0 when none is under way). */
+    public int pending() { return pending; }
+    public void clear() { size = 0; pending = 0; }
 
     /** The average of the queue (Algorithm 1, line 15), or null when it is empty. */
     public Pose2 pose() {

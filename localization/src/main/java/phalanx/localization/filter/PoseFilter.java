@@ -23,6 +23,13 @@ public interface PoseFilter {
     /** 0 (no belief) to 1 (as sure as this filter gets). */
     double confidence();
 
+    /**
+     * How many times a belief began since construction: the first fix, a start after the belief was
+     * lost or reset, a relocation after a move (issue 19). Whatever was placed with the old pose (the
+     * ball) is wrong when this changes.
+     */
+    int starts();
+
     /** Forgets the belief (after a beam the agent asked for, for example). */
     void reset();
 }

@@ -68,7 +68,7 @@ class EkfPoseFilterTest {
         assertEquals(-1, f.pose().x(), 1e-9);
         // Trainer move to (3, -4): the first frames are refused, then the filter restarts at the fix.
         Pose2 moved = new Pose2(3, -4, 90);
-        for (int i = 1; i < c.ekfResetFrames(); i++)
+        for (int i = 1; i < c.relocateFrames(); i++)
             assertFalse(f.update(moved, see(moved, new Random(i), 0, Landmark.F1R, Landmark.G1R)));
         assertTrue(f.update(moved, see(moved, new Random(9), 0, Landmark.F1R, Landmark.G1R)));
         assertEquals(3, f.pose().x(), 1e-9);
@@ -84,5 +84,68 @@ class EkfPoseFilterTest {
         assertEquals(1.1, f.pose().y(), 0.01);
         assertEquals(100, f.pose().thetaDeg(), 1e-9);
         assertTrue(f.positionSigma() > before, "uncertainty grows while walking blind");
+    }
+
+    private static final Landmark[] FOUR = {Landmark.F1R, Landmark.G1R, Landmark.G2R, Landmark.F2R};
+
+    /** A converged filter at the given pose. */
+    private EkfPoseFilter converged(Pose2 at) {
+        EkfPoseFilter f = new EkfPoseFilter(LocalizationConfig.DEFAULT);
+        f.update(at, List.of());
+        for (int i = 0; i < 30; i++) f.update(at, see(at, new Random(i), 0.01, FOUR));
+        return f;
+    }
+
+    @Test
+    void aMoveIsFollowedAtTheKthDisagreeingFrame() {
+        int k = LocalizationConfig.DEFAULT.relocateFrames();
+        Pose2 a = new Pose2(-4, 1, 0), b = new Pose2(-2, 3, 30);
+        EkfPoseFilter f = converged(a);
+        assertEquals(1, f.starts());
+        for (int i = 1; i < k; i++) {
+            assertFalse(f.update(b, see(b, new Random(50 + i), 0.01, FOUR)), "frame " + i + " after the move");
+            assertEquals(-4, f.pose().x(), 0.02, "not yet");
+        }
+        assertTrue(f.update(new Pose2(-2.03, 3.01, 30.2), see(b, new Random(60), 0.01, FOUR)));
+        assertEquals(-2.015, f.pose().x(), 1e-9, "re-initialised at the mean of the two disagreeing frames' fixes");
+        assertEquals(30.1, f.pose().thetaDeg(), 1e-9);
+        assertEquals(2, f.starts());
+        for (int i = 0; i < 20; i++) f.update(b, see(b, new Random(70 + i), 0.01, FOUR));
+        assertEquals(-2, f.pose().x(), 0.02);
+        assertEquals(30, f.pose().thetaDeg(), 0.5);
+    }
+
+    @Test
+    void aSingleOutlierFrameDoesNotMoveTheBelief() {
+        Pose2 a = new Pose2(-4, 1, 0), wrong = new Pose2(3, -2, 20);
+        EkfPoseFilter f = converged(a);
+        for (int round = 0; round < 10; round++) {
+            assertFalse(f.update(wrong, see(wrong, new Random(round), 0.01, FOUR)), "an outlier frame");
+            assertEquals(-4, f.pose().x(), 0.02);
+            assertTrue(f.update(a, see(a, new Random(100 + round), 0.01, FOUR)));
+        }
+        assertEquals(1, f.starts(), "never re-initialised");
+        assertEquals(1, f.pose().y(), 0.02);
+    }
+
+    @Test
+    void farFramesThatDisagreeWithEachOtherDoNotRelocate() {
+        Pose2 a = new Pose2(-4, 1, 0), b = new Pose2(3, -2, 20), c = new Pose2(3, 2, 20);
+        EkfPoseFilter f = converged(a);
+        assertFalse(f.update(b, see(b, new Random(1), 0.01, FOUR)));
+        assertFalse(f.update(c, see(c, new Random(2), 0.01, FOUR)), "4 m from the previous far fix");
+        assertEquals(-4, f.pose().x(), 0.02);
+        assertFalse(f.update(null, see(c, new Random(3), 0.01, Landmark.G1R)), "one landmark, no fix: the count stays");
+        assertTrue(f.update(c, see(c, new Random(4), 0.01, FOUR)), "c twice in a row (frames with a fix)");
+        assertEquals(2, f.pose().y(), 1e-9);
+    }
+
+    @Test
+    void aFixFarOffWhileTheLandmarksAgreeIsNotAMove() {
+        Pose2 a = new Pose2(-4, 1, 0), bad = new Pose2(-1, 1, 0);
+        EkfPoseFilter f = converged(a);
+        for (int i = 0; i < 5; i++) assertTrue(f.update(bad, see(a, new Random(i), 0.01, FOUR)), "the landmarks pass the gate");
+        assertEquals(1, f.starts());
+        assertEquals(-4, f.pose().x(), 0.02);
     }
 }

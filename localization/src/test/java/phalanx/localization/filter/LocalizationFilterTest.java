@@ -80,4 +80,89 @@ class LocalizationFilterTest {
         assertFalse(f.add(new Pose2(0, 0, Double.POSITIVE_INFINITY)));
         assertTrue(f.isEmpty());
     }
+
+    /** Relocation as the self filter runs it (LocalizationConfig.DEFAULT: k = 2, 0.5 m / 15° far, 0.5 m / 15° spread). */
+    private static LocalizationFilter relocating() {
+        return new LocalizationFilter(10, 0.5, 15, 2, 0.5, 15, 0.5, 15);
+    }
+
+    @Test
+    void twoAgreeingFarRefusalsReplaceTheQueue() {
+        LocalizationFilter f = relocating();
+        for (int i = 0; i < 10; i++) f.add(new Pose2(-1, -4, 90));
+        assertEquals(1, f.starts());
+        // Trainer move to (3, -4): the first estimate there is refused as in Algorithm 1 ...
+        assertFalse(f.add(new Pose2(3.02, -4, 90)));
+        assertEquals(-1, f.pose().x(), 1e-9, "one far estimate does not move the belief");
+        assertEquals(9, f.size(), "Algorithm 1, line 8: the oldest went");
+        assertEquals(1, f.pending());
+        // ... the second, 0.04 m from the first, relocates: the queue is the two of them.
+        assertTrue(f.add(new Pose2(2.98, -4, 90)));
+        assertEquals(3, f.pose().x(), 1e-9);
+        assertEquals(2, f.size());
+        assertEquals(2, f.starts());
+        assertEquals(1, f.relocations());
+        assertEquals(0, f.pending());
+        assertTrue(f.add(new Pose2(3, -4.1, 90)), "and the filter goes on from there");
+    }
+
+    @Test
+    void aSingleOutlierNeverMovesTheBelief() {
+        LocalizationFilter f = relocating();
+        for (int i = 0; i < 10; i++) f.add(new Pose2(0, 0, 0));
+        for (int round = 0; round < 20; round++) {
+            assertFalse(f.add(new Pose2(6, 2, 40)), "an outlier frame between good ones");
+            assertTrue(f.add(new Pose2(0.01, 0, 0)));
+            assertTrue(f.add(new Pose2(-0.01, 0, 0)));
+            assertEquals(0, f.pose().x(), 0.011);
+            assertEquals(0, f.pose().y(), 1e-9);
+        }
+        assertEquals(0, f.relocations());
+        assertEquals(1, f.starts());
+    }
+
+    @Test
+    void farRefusalsThatDisagreeWithEachOtherDoNotRelocate() {
+        LocalizationFilter f = relocating();
+        for (int i = 0; i < 10; i++) f.add(new Vector2(0, 0));
+        assertFalse(f.add(new Pose2(4, 0, 0)));
+        assertFalse(f.add(new Pose2(4, 3, 0)), "3 m from the previous refused one: the count starts again from it");
+        assertEquals(0, f.pose().x(), 1e-9);
+        assertEquals(0, f.relocations());
+        assertTrue(f.add(new Pose2(4, 3.1, 0)), "two in a row that agree");
+        assertEquals(4, f.pose().x(), 1e-9);
+        assertEquals(3.05, f.pose().y(), 1e-9);
+    }
+
+    @Test
+    void anAgreeingEstimateBetweenTwoFarOnesResetsTheCount() {
+        LocalizationFilter f = relocating();
+        for (int i = 0; i < 10; i++) f.add(new Pose2(0, 0, 0));
+        assertFalse(f.add(new Pose2(4, 0, 0)));
+        assertTrue(f.add(new Pose2(0, 0, 0)));
+        assertFalse(f.add(new Pose2(4, 0, 0)), "not two in a row");
+        assertEquals(0, f.relocations());
+    }
+
+    @Test
+    void aTurnInPlaceRelocatesToo() {
+        LocalizationFilter f = relocating();
+        for (int i = 0; i < 10; i++) f.add(new Pose2(2, 2, 0));
+        assertFalse(f.add(new Pose2(2, 2, 90)));
+        assertTrue(f.add(new Pose2(2, 2, 91)));
+        assertEquals(90.5, f.pose().thetaDeg(), 1e-9);
+    }
+
+    @Test
+    void theThesisFilterAndTheBallHaveNoRelocation() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, Double.NaN);
+        for (int i = 0; i < 10; i++) f.add(new Vector2(0, 0));
+        for (int i = 0; i < 9; i++) assertFalse(f.add(new Vector2(4, 0)), "refusal " + (i + 1));
+        assertEquals(0, f.relocations());
+        assertEquals(1, f.starts());
+        assertFalse(f.add(new Vector2(4, 0)));
+        assertTrue(f.isEmpty());
+        assertTrue(f.add(new Vector2(4, 0)));
+        assertEquals(2, f.starts(), "a new belief after the queue emptied counts as a start");
+    }
 }
