@@ -23,7 +23,10 @@ public final class MjPerceptionParser {
             1e13, 1e14, 1e15};
 
     private String s;
+    /** s's chars (read from an array rather than through String.charAt: faster), reused between messages. */
+    private char[] c = new char[4096];
     private int n;
+    private final String[] names = new String[256];
     private int p;
     /** The head atom of the list {@link #open} last entered: [headStart, headEnd), empty if it has none. */
     private int headStart, headEnd;
@@ -40,18 +43,20 @@ public final class MjPerceptionParser {
     public MjPerception parse(String message) throws MalformedMessageException {
         s = message;
         n = message.length();
+        if (c.length < n) c = new char[Math.max(n, 2 * c.length)];
+        message.getChars(0, n, c, 0);
         p = 0;
         time = gameTime = Double.NaN;
         playMode = teamLeft = teamRight = null;
         scoreLeft = scoreRight = 0;
         quat = pos = gyro = acc = null;
-        joints = new LinkedHashMap<>();
+        joints = new LinkedHashMap<>(32); // the T1's 23 joints without a rehash
         touch = new LinkedHashMap<>();
         seen = new ArrayList<>();
         heard = new ArrayList<>();
         ws();
         while (p < n) {
-            if (s.charAt(p) != '(') throw error("expected '('");
+            if (c[p] != '(') throw error("expected '('");
             node();
             ws();
         }
@@ -97,7 +102,7 @@ public final class MjPerceptionParser {
                     : headIs("sl") ? 4 : headIs("sr") ? 5 : -1;
             if (kind < 0) { close(1); continue; }
             if (!next()) continue; // (t) alone is ignored
-            if (s.charAt(p) == '(') throw error("expected an atom");
+            if (c[p] == '(') throw error("expected an atom");
             switch (kind) {
                 case 0 -> gameTime = number();
                 case 1 -> playMode = atom();
@@ -116,7 +121,7 @@ public final class MjPerceptionParser {
         int state = 0;
         for (int i = 1; i <= 4; i++) {
             if (!next()) throw error("(TCH n name val 0|1) too short");
-            boolean list = s.charAt(p) == '(';
+            boolean list = c[p] == '(';
             if (i == 2 || i == 4) {
                 if (list) throw error("expected an atom");
                 if (i == 2) name = atom(); else state = (int) number();
@@ -137,7 +142,7 @@ public final class MjPerceptionParser {
             if (headIs("P")) {
                 player();
             } else if (headEnd > headStart) {
-                String name = s.substring(headStart, headEnd);
+                String name = name(headStart, headEnd);
                 seen.add(seenObject(name, numbersChild("pol", 3, 1)));
             } else {
                 close(1);
@@ -157,7 +162,7 @@ public final class MjPerceptionParser {
             } else if (headIs("id")) {
                 if (id == null) id = firstAtom(2); else close(2);
             } else if (headEnd > headStart && !headIs("P")) {
-                parts.add(s.substring(headStart, headEnd));
+                parts.add(name(headStart, headEnd));
                 polars.add(numbersChild("pol", 3, 2));
             } else {
                 close(2);
@@ -184,7 +189,7 @@ public final class MjPerceptionParser {
         while (next()) {
             if (!first) b.append(", ");
             first = false;
-            if (s.charAt(p) == '(') {
+            if (c[p] == '(') {
                 open(depth + 1);
                 render(b, depth + 1);
             } else {
@@ -214,7 +219,7 @@ public final class MjPerceptionParser {
         double[] v = new double[k];
         for (int i = 0; i < k; i++) {
             if (!next()) throw error("needs " + k + " numbers");
-            if (s.charAt(p) == '(') throw error("expected a number");
+            if (c[p] == '(') throw error("expected a number");
             v[i] = number();
         }
         if (next()) throw error("needs " + k + " numbers");
@@ -223,7 +228,7 @@ public final class MjPerceptionParser {
 
     /** The rest of a list that must hold exactly one atom after its head. */
     private String singleAtom() throws MalformedMessageException {
-        if (!next() || s.charAt(p) == '(') throw error("(n NAME) expected");
+        if (!next() || c[p] == '(') throw error("(n NAME) expected");
         String a = atom();
         if (next()) throw error("(n NAME) expected");
         return a;
@@ -231,7 +236,7 @@ public final class MjPerceptionParser {
 
     /** The rest of a list at depth whose first element after the head must be an atom; the rest is skipped. */
     private String firstAtom(int depth) throws MalformedMessageException {
-        if (!next() || s.charAt(p) == '(') throw error("expected an atom");
+        if (!next() || c[p] == '(') throw error("expected an atom");
         String a = atom();
         close(depth);
         return a;
@@ -241,7 +246,7 @@ public final class MjPerceptionParser {
 
     /** At an element: a list is entered ({@link #open}, true); an atom is skipped (false). */
     private boolean openChild(int depth) throws MalformedMessageException {
-        if (s.charAt(p) != '(') {
+        if (c[p] != '(') {
             skipAtom();
             return false;
         }
@@ -255,7 +260,7 @@ public final class MjPerceptionParser {
         p++;
         ws();
         headStart = p;
-        if (p < n && s.charAt(p) != '(' && s.charAt(p) != ')') skipAtom();
+        if (p < n && c[p] != '(' && c[p] != ')') skipAtom();
         headEnd = p;
     }
 
@@ -267,7 +272,7 @@ public final class MjPerceptionParser {
     private boolean next() throws MalformedMessageException {
         ws();
         if (p >= n) throw error("unexpected end, ')' missing");
-        if (s.charAt(p) != ')') return true;
+        if (c[p] != ')') return true;
         p++;
         return false;
     }
@@ -275,7 +280,7 @@ public final class MjPerceptionParser {
     /** Skips the rest of the list being read (at depth), past its ')'. */
     private void close(int depth) throws MalformedMessageException {
         while (next()) {
-            if (s.charAt(p) == '(') skipList(depth + 1); else skipAtom();
+            if (c[p] == '(') skipList(depth + 1); else skipAtom();
         }
     }
 
@@ -286,13 +291,13 @@ public final class MjPerceptionParser {
     }
 
     private void ws() {
-        while (p < n && whitespace(s.charAt(p))) p++;
+        while (p < n && whitespace(c[p])) p++;
     }
 
     private void skipAtom() {
         while (p < n) {
-            char c = s.charAt(p);
-            if (c == '(' || c == ')' || whitespace(c)) return;
+            char ch = c[p];
+            if (ch == '(' || ch == ')' || whitespace(ch)) return;
             p++;
         }
     }
@@ -300,7 +305,20 @@ public final class MjPerceptionParser {
     private String atom() {
         int start = p;
         skipAtom();
-        return s.substring(start, p);
+        return name(start, p);
+    }
+
+    /**
+     * s.substring(start, end), the same String again for the same text: the names (joints, markers, play
+     * mode) recur in every message, so a small cache (last one per slot) saves a copy per name.
+     */
+    private String name(int start, int end) {
+        int h = 0;
+        for (int i = start; i < end; i++) h = 31 * h + c[i];
+        int slot = (h ^ h >>> 7) & (names.length - 1);
+        String cached = names[slot];
+        if (cached != null && cached.length() == end - start && s.startsWith(cached, start)) return cached;
+        return names[slot] = s.substring(start, end);
     }
 
     /**
@@ -312,16 +330,16 @@ public final class MjPerceptionParser {
         int start = p;
         skipAtom();
         int i = start;
-        boolean negative = i < p && s.charAt(i) == '-';
+        boolean negative = i < p && c[i] == '-';
         if (negative) i++;
         long digits = 0;
         int count = 0, point = -1;
         for (; i < p; i++) {
-            char c = s.charAt(i);
-            if (c >= '0' && c <= '9') {
-                digits = digits * 10 + (c - '0');
+            char ch = c[i];
+            if (ch >= '0' && ch <= '9') {
+                digits = digits * 10 + (ch - '0');
                 count++;
-            } else if (c == '.' && point < 0 && count > 0) {
+            } else if (ch == '.' && point < 0 && count > 0) {
                 point = count;
             } else {
                 break;
@@ -345,9 +363,9 @@ public final class MjPerceptionParser {
         return d;
     }
 
-    /** Character.isWhitespace, with the printable ASCII (never white) answered without the lookup. */
+    /** Character.isWhitespace, with the space and the printable ASCII (never white) answered without the lookup. */
     private static boolean whitespace(char c) {
-        return (c <= ' ' || c >= 0x7F) && Character.isWhitespace(c);
+        return c == ' ' || (c < ' ' || c >= 0x7F) && Character.isWhitespace(c);
     }
 
     private MalformedMessageException error(String reason) {
