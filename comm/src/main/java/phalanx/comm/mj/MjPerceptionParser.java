@@ -27,6 +27,7 @@ public final class MjPerceptionParser {
     private char[] c = new char[4096];
     private int n;
     private final String[] names = new String[256];
+    private final double[] polar = new double[3];
     private int p;
     /** The head atom of the list {@link #open} last entered: [headStart, headEnd), empty if it has none. */
     private int headStart, headEnd;
@@ -67,12 +68,12 @@ public final class MjPerceptionParser {
     private void node() throws MalformedMessageException {
         open(0);
         if (headIs("HJ")) joint();
-        else if (headIs("time")) time = numbersChild("now", 1, 0)[0];
+        else if (headIs("time")) time = numbersChild("now", new double[1], 0)[0];
         else if (headIs("GS")) gameState();
-        else if (headIs("quat")) quat = numbersChild("q", 4, 0);
-        else if (headIs("pos")) pos = numbersChild("p", 3, 0);
-        else if (headIs("GYR")) gyro = numbersChild("rt", 3, 0);
-        else if (headIs("ACC")) acc = numbersChild("a", 3, 0);
+        else if (headIs("quat")) quat = numbersChild("q", new double[4], 0);
+        else if (headIs("pos")) pos = numbersChild("p", new double[3], 0);
+        else if (headIs("GYR")) gyro = numbersChild("rt", new double[3], 0);
+        else if (headIs("ACC")) acc = numbersChild("a", new double[3], 0);
         else if (headIs("See")) see();
         else if (headIs("TCH")) touch();
         else if (headIs("MIC")) heard.add(render(new StringBuilder(), 0).toString());
@@ -86,8 +87,8 @@ public final class MjPerceptionParser {
         while (next()) {
             if (!openChild(1)) continue;
             if (name == null && headIs("n")) name = singleAtom();
-            else if (Double.isNaN(ax) && headIs("ax")) ax = numbers(1)[0];
-            else if (Double.isNaN(vx) && headIs("vx")) vx = numbers(1)[0];
+            else if (Double.isNaN(ax) && headIs("ax")) ax = singleNumber();
+            else if (Double.isNaN(vx) && headIs("vx")) vx = singleNumber();
             else close(1);
         }
         if (name == null || Double.isNaN(ax) || Double.isNaN(vx)) throw error("(HJ) needs (n), (ax) and (vx)");
@@ -143,7 +144,7 @@ public final class MjPerceptionParser {
                 player();
             } else if (headEnd > headStart) {
                 String name = name(headStart, headEnd);
-                seen.add(seenObject(name, numbersChild("pol", 3, 1)));
+                seen.add(seenObject(name, numbersChild("pol", polar, 1)));
             } else {
                 close(1);
             }
@@ -163,7 +164,7 @@ public final class MjPerceptionParser {
                 if (id == null) id = firstAtom(2); else close(2);
             } else if (headEnd > headStart && !headIs("P")) {
                 parts.add(name(headStart, headEnd));
-                polars.add(numbersChild("pol", 3, 2));
+                polars.add(numbersChild("pol", new double[3], 2));
             } else {
                 close(2);
             }
@@ -203,26 +204,37 @@ public final class MjPerceptionParser {
 
     // --- children of the list being read (its head consumed) ---
 
-    /** Reads the rest of a list at depth: the k numbers of its first child headed name; others are skipped. */
-    private double[] numbersChild(String name, int k, int depth) throws MalformedMessageException {
-        double[] v = null;
+    /** Reads the rest of a list at depth: v filled from its first child headed name; others are skipped. */
+    private double[] numbersChild(String name, double[] v, int depth) throws MalformedMessageException {
+        boolean found = false;
         while (next()) {
             if (!openChild(depth + 1)) continue;
-            if (v == null && headIs(name)) v = numbers(k); else close(depth + 1);
+            if (!found && headIs(name)) {
+                numbers(v);
+                found = true;
+            } else {
+                close(depth + 1);
+            }
         }
-        if (v == null) throw error("missing (" + name + ")");
+        if (!found) throw error("missing (" + name + ")");
         return v;
     }
 
-    /** The rest of a list that must hold exactly k numbers after its head. */
-    private double[] numbers(int k) throws MalformedMessageException {
-        double[] v = new double[k];
-        for (int i = 0; i < k; i++) {
-            if (!next()) throw error("needs " + k + " numbers");
+    /** The rest of a list that must hold exactly v.length numbers after its head, into v. */
+    private void numbers(double[] v) throws MalformedMessageException {
+        for (int i = 0; i < v.length; i++) {
+            if (!next()) throw error("needs " + v.length + " numbers");
             if (c[p] == '(') throw error("expected a number");
             v[i] = number();
         }
-        if (next()) throw error("needs " + k + " numbers");
+        if (next()) throw error("needs " + v.length + " numbers");
+    }
+
+    /** The rest of a list that must hold exactly one number after its head. */
+    private double singleNumber() throws MalformedMessageException {
+        if (!next() || c[p] == '(') throw error("expected one number");
+        double v = number();
+        if (next()) throw error("expected one number");
         return v;
     }
 
@@ -295,11 +307,11 @@ public final class MjPerceptionParser {
     }
 
     private void skipAtom() {
-        while (p < n) {
-            char ch = c[p];
-            if (ch == '(' || ch == ')' || whitespace(ch)) return;
-            p++;
-        }
+        while (!atomEnds()) p++;
+    }
+
+    private boolean atomEnds() {
+        return p >= n || c[p] == '(' || c[p] == ')' || whitespace(c[p]);
     }
 
     private String atom() {
@@ -328,14 +340,12 @@ public final class MjPerceptionParser {
      */
     private double number() throws MalformedMessageException {
         int start = p;
-        skipAtom();
-        int i = start;
-        boolean negative = i < p && c[i] == '-';
-        if (negative) i++;
+        boolean negative = c[p] == '-';
+        if (negative) p++;
         long digits = 0;
         int count = 0, point = -1;
-        for (; i < p; i++) {
-            char ch = c[i];
+        for (; p < n; p++) {
+            char ch = c[p];
             if (ch >= '0' && ch <= '9') {
                 digits = digits * 10 + (ch - '0');
                 count++;
@@ -345,10 +355,11 @@ public final class MjPerceptionParser {
                 break;
             }
         }
-        if (i == p && count > 0 && count <= 15 && point != count) {
+        if (atomEnds() && count > 0 && count <= 15 && point != count) {
             double v = point < 0 ? digits : digits / POW10[count - point];
             return negative ? -v : v;
         }
+        skipAtom();
         return parseDouble(start, p);
     }
 
