@@ -26,11 +26,13 @@ public final class MjPerceptionParser {
     /** s's chars (read from an array rather than through String.charAt: faster), reused between messages. */
     private char[] c = new char[4096];
     private int n;
-    private final String[] names = new String[256];
-    private final double[] polar = new double[3];
     private int p;
     /** The head atom of the list {@link #open} last entered: [headStart, headEnd), empty if it has none. */
     private int headStart, headEnd;
+    /** See {@link #name}. */
+    private final String[] names = new String[256];
+    /** A See object's (pol D A E), copied into its Seen. */
+    private final double[] polar = new double[3];
 
     private double time, gameTime;
     private String playMode, teamLeft, teamRight;
@@ -370,7 +372,9 @@ public final class MjPerceptionParser {
         } catch (NumberFormatException e) {
             throw new MalformedMessageException("bad number " + s.substring(start, end), start);
         }
-        if (!Double.isFinite(d)) throw new MalformedMessageException("non-finite number " + s.substring(start, end), start);
+        if (!Double.isFinite(d)) {
+            throw new MalformedMessageException("non-finite number " + s.substring(start, end), start);
+        }
         return d;
     }
 
