@@ -30,7 +30,7 @@ public final class MjPerceptionParser {
     /** The head atom of the list {@link #open} last entered: [headStart, headEnd), empty if it has none. */
     private int headStart, headEnd;
     /** See {@link #name}. */
-    private final String[] names = new String[256];
+    private final String[] names = new String[1024];
     /** A See object's (pol D A E), copied into its Seen. */
     private final double[] polar = new double[3];
 
@@ -304,16 +304,22 @@ public final class MjPerceptionParser {
         close(depth);
     }
 
+    // The scanning loops keep the position in a local (the JIT then keeps it in a register).
+
     private void ws() {
-        while (p < n && whitespace(c[p])) p++;
+        int i = p;
+        while (i < n && whitespace(c[i])) i++;
+        p = i;
     }
 
     private void skipAtom() {
-        while (!atomEnds()) p++;
+        int i = p;
+        while (!atomEnds(i)) i++;
+        p = i;
     }
 
-    private boolean atomEnds() {
-        return p >= n || c[p] == '(' || c[p] == ')' || whitespace(c[p]);
+    private boolean atomEnds(int i) {
+        return i >= n || c[i] == '(' || c[i] == ')' || whitespace(c[i]);
     }
 
     private String atom() {
@@ -324,14 +330,18 @@ public final class MjPerceptionParser {
 
     /**
      * s.substring(start, end), the same String again for the same text: the names (joints, markers, play
-     * mode) recur in every message, so a small cache (last one per slot) saves a copy per name.
+     * mode) recur in every message, so a small cache saves a copy per name. Two slots per hash, the newer
+     * name first (the T1's ~50 names share a pair of slots rarely, and then both stay).
      */
     private String name(int start, int end) {
         int h = 0;
         for (int i = start; i < end; i++) h = 31 * h + c[i];
-        int slot = (h ^ h >>> 7) & (names.length - 1);
-        String cached = names[slot];
-        if (cached != null && cached.length() == end - start && s.startsWith(cached, start)) return cached;
+        int slot = (h ^ h >>> 9) & (names.length - 2);
+        for (int k = slot; k <= slot + 1; k++) {
+            String cached = names[k];
+            if (cached != null && cached.length() == end - start && s.startsWith(cached, start)) return cached;
+        }
+        names[slot + 1] = names[slot];
         return names[slot] = s.substring(start, end);
     }
 
@@ -341,13 +351,13 @@ public final class MjPerceptionParser {
      * Double.parseDouble's result. Any other form (exponent, more digits, "5.", junk) goes to Double.parseDouble.
      */
     private double number() throws MalformedMessageException {
-        int start = p;
-        boolean negative = c[p] == '-';
-        if (negative) p++;
+        int start = p, i = p;
+        boolean negative = c[i] == '-';
+        if (negative) i++;
         long digits = 0;
         int count = 0, point = -1;
-        for (; p < n; p++) {
-            char ch = c[p];
+        for (; i < n; i++) {
+            char ch = c[i];
             if (ch >= '0' && ch <= '9') {
                 digits = digits * 10 + (ch - '0');
                 count++;
@@ -357,7 +367,8 @@ public final class MjPerceptionParser {
                 break;
             }
         }
-        if (atomEnds() && count > 0 && count <= 15 && point != count) {
+        p = i;
+        if (atomEnds(i) && count > 0 && count <= 15 && point != count) {
             double v = point < 0 ? digits : digits / POW10[count - point];
             return negative ? -v : v;
         }
