@@ -9,7 +9,7 @@ import java.util.Map;
 
 /**
  * The tree parser {@link MjPerceptionParser} had until issue 20, kept as the reference its single-pass
- * replacement is checked against (MjPerceptionParserTest) and benchmarked against (MjParserBenchmark).
+ * replacement is checked against (MjPerceptionParserReferenceTest) and timed against (MjParserBenchmark).
  * Parses the rcssservermj (rcsssmj 0.2.1) perception dialect into {@link MjPerception}: builds a List tree
  * of substrings, then walks it. Unknown nodes are ignored; every defect ends in
  * {@link MalformedMessageException}.
