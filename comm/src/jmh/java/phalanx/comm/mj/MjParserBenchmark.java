@@ -18,6 +18,8 @@ import java.util.concurrent.TimeUnit;
 /**
  * Parses every message of the recorded rcssservermj stream (comm/src/test/resources/rcssservermj), one per
  * invocation. MB/s = ops/s x mean message size (printed at setup), as ParserBenchmark does for SimSpark.
+ * {@code parseTreeReference} times the tree parser MjPerceptionParser replaced (TreeReferenceParser, test
+ * source set) on the same stream, so old and new are measured back to back under the same load.
  * Run from the project root: gradle :comm:jmh -PjmhArgs='MjParserBenchmark -f 1 -wi 3 -w 2 -i 5 -r 2'.
  */
 @State(Scope.Thread)
@@ -27,6 +29,7 @@ public class MjParserBenchmark {
     private String[] messages;
     private int next;
     private final MjPerceptionParser parser = new MjPerceptionParser();
+    private final TreeReferenceParser reference = new TreeReferenceParser();
 
     @Setup(Level.Trial)
     public void load() throws Exception {
@@ -42,5 +45,12 @@ public class MjParserBenchmark {
         String m = messages[next];
         next = next + 1 == messages.length ? 0 : next + 1;
         return parser.parse(m);
+    }
+
+    @Benchmark
+    public MjPerception parseTreeReference() throws MalformedMessageException {
+        String m = messages[next];
+        next = next + 1 == messages.length ? 0 : next + 1;
+        return reference.parse(m);
     }
 }

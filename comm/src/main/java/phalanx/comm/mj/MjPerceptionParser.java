@@ -9,143 +9,392 @@ import java.util.Map;
 
 /**
  * Parses the rcssservermj (rcsssmj 0.2.1) perception dialect into {@link MjPerception}.
- * A small tree reader (the SimSpark {@code PerceptionParser} reads bytes directly and has no
- * tokenizer to share). Unknown nodes are ignored; every defect ends in
- * {@link MalformedMessageException}.
+ * A single-pass reader over the message: each top-level node is dispatched on its head and read by a small
+ * method per node kind; everything else is skipped, its parentheses checked. The plain {@code -12.345}
+ * numbers the server sends are read in place (exact: at most 15 digits, so one division of two exact doubles
+ * rounds as Double.parseDouble does); any other form goes through Double.parseDouble. Unknown nodes are
+ * ignored; every defect (truncation, unbalanced parentheses, nesting deeper than 32, a bad number, a missing
+ * child) ends in {@link MalformedMessageException}. The results, and which messages are rejected, are those
+ * of the tree parser it replaced (TreeReferenceParser in the tests). Not thread-safe: one per thread.
  */
 public final class MjPerceptionParser {
+    private static final int MAX_DEPTH = 32;
+    private static final double[] POW10 = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
+            1e13, 1e14, 1e15};
+
     private String s;
+    /** s's chars (read from an array rather than through String.charAt: faster), reused between messages. */
+    private char[] c = new char[4096];
+    private int n;
     private int p;
+    /** The head atom of the list {@link #open} last entered: [headStart, headEnd), empty if it has none. */
+    private int headStart, headEnd;
+    /** See {@link #name}. */
+    private final String[] names = new String[1024];
+    /** A See object's (pol D A E), copied into its Seen. */
+    private final double[] polar = new double[3];
+
+    private double time, gameTime;
+    private String playMode, teamLeft, teamRight;
+    private int scoreLeft, scoreRight;
+    private double[] quat, pos, gyro, acc;
+    private Map<String, double[]> joints;
+    private Map<String, Integer> touch;
+    private List<MjPerception.Seen> seen;
+    private List<String> heard;
 
     public MjPerception parse(String message) throws MalformedMessageException {
         s = message;
+        n = message.length();
+        if (c.length < n) c = new char[Math.max(n, 2 * c.length)];
+        message.getChars(0, n, c, 0);
         p = 0;
-        List<Object> top = new ArrayList<>();
+        time = gameTime = Double.NaN;
+        playMode = teamLeft = teamRight = null;
+        scoreLeft = scoreRight = 0;
+        quat = pos = gyro = acc = null;
+        joints = new LinkedHashMap<>(32); // the T1's 23 joints without a rehash
+        touch = new LinkedHashMap<>();
+        seen = new ArrayList<>();
+        heard = new ArrayList<>();
         ws();
-        while (p < s.length()) {
-            if (s.charAt(p) != '(') throw new MalformedMessageException("expected '('", p);
-            top.add(list(0));
+        while (p < n) {
+            if (c[p] != '(') throw error("expected '('");
+            node();
             ws();
         }
-        try {
-            return build(top);
-        } catch (RuntimeException e) {
-            throw new MalformedMessageException("bad node: " + e.getMessage(), p);
+        return new MjPerception(time, gameTime, playMode, teamLeft, teamRight, scoreLeft, scoreRight,
+                quat, pos, gyro, acc, joints, touch, seen, heard);
+    }
+
+    private void node() throws MalformedMessageException {
+        open(0);
+        if (headIs("HJ")) joint();
+        else if (headIs("time")) time = numbersChild("now", new double[1], 0)[0];
+        else if (headIs("GS")) gameState();
+        else if (headIs("quat")) quat = numbersChild("q", new double[4], 0);
+        else if (headIs("pos")) pos = numbersChild("p", new double[3], 0);
+        else if (headIs("GYR")) gyro = numbersChild("rt", new double[3], 0);
+        else if (headIs("ACC")) acc = numbersChild("a", new double[3], 0);
+        else if (headIs("See")) see();
+        else if (headIs("TCH")) touch();
+        else if (headIs("MIC")) heard.add(render(new StringBuilder(), 0).toString());
+        else close(0);
+    }
+
+    /** (HJ (n NAME) (ax DEG) (vx DEG/S)): the first of each child counts, in any order. */
+    private void joint() throws MalformedMessageException {
+        String name = null;
+        double ax = Double.NaN, vx = Double.NaN; // numbers are finite: NaN is "not seen yet"
+        while (next()) {
+            if (!openChild(1)) continue;
+            if (name == null && headIs("n")) name = singleAtom();
+            else if (Double.isNaN(ax) && headIs("ax")) ax = singleNumber();
+            else if (Double.isNaN(vx) && headIs("vx")) vx = singleNumber();
+            else close(1);
+        }
+        if (name == null || Double.isNaN(ax) || Double.isNaN(vx)) throw error("(HJ) needs (n), (ax) and (vx)");
+        joints.put(name, new double[] {ax, vx});
+    }
+
+    /** (GS (t T) (pm MODE) (tl NAME) (tr NAME) (sl N) (sr N)): each child's first element; the last child wins. */
+    private void gameState() throws MalformedMessageException {
+        while (next()) {
+            if (!openChild(1)) continue;
+            int kind = headIs("t") ? 0 : headIs("pm") ? 1 : headIs("tl") ? 2 : headIs("tr") ? 3
+                    : headIs("sl") ? 4 : headIs("sr") ? 5 : -1;
+            if (kind < 0) { close(1); continue; }
+            if (!next()) continue; // (t) alone is ignored
+            if (c[p] == '(') throw error("expected an atom");
+            switch (kind) {
+                case 0 -> gameTime = number();
+                case 1 -> playMode = atom();
+                case 2 -> teamLeft = atom();
+                case 3 -> teamRight = atom();
+                case 4 -> scoreLeft = (int) number();
+                default -> scoreRight = (int) number();
+            }
+            close(1);
         }
     }
 
-    private void ws() { while (p < s.length() && Character.isWhitespace(s.charAt(p))) p++; }
+    /** (TCH n NAME val 0|1 ...): the third element is the name, the fifth the state. */
+    private void touch() throws MalformedMessageException {
+        String name = null;
+        int state = 0;
+        for (int i = 1; i <= 4; i++) {
+            if (!next()) throw error("(TCH n name val 0|1) too short");
+            boolean list = c[p] == '(';
+            if (i == 2 || i == 4) {
+                if (list) throw error("expected an atom");
+                if (i == 2) name = atom(); else state = (int) number();
+            } else if (list) {
+                skipList(1);
+            } else {
+                skipAtom();
+            }
+        }
+        close(0);
+        touch.put(name, state);
+    }
 
-    private List<Object> list(int depth) throws MalformedMessageException {
-        if (depth > 32) throw new MalformedMessageException("nesting too deep", p);
-        p++; // '('
-        List<Object> out = new ArrayList<>();
-        while (true) {
-            ws();
-            if (p >= s.length()) throw new MalformedMessageException("unexpected end, ')' missing", p);
-            char c = s.charAt(p);
-            if (c == ')') { p++; return out; }
-            if (c == '(') { out.add(list(depth + 1)); continue; }
-            int st = p;
-            while (p < s.length() && s.charAt(p) != '(' && s.charAt(p) != ')' && !Character.isWhitespace(s.charAt(p))) p++;
-            out.add(s.substring(st, p));
+    /** (See (NAME (pol D A E)) ... (P (team T) (id I) (PART (pol D A E)) ...) ...). */
+    private void see() throws MalformedMessageException {
+        while (next()) {
+            if (!openChild(1)) continue;
+            if (headIs("P")) {
+                player();
+            } else if (headEnd > headStart) {
+                String name = name(headStart, headEnd);
+                seen.add(seenObject(name, numbersChild("pol", polar, 1)));
+            } else {
+                close(1);
+            }
         }
     }
 
-    private static String head(Object o) {
-        if (o instanceof List<?> l && !l.isEmpty() && l.get(0) instanceof String h) return h;
-        return "";
+    /** A seen player (depth 1): one Seen "P team id PART" per part, the first (team) and (id) naming them all. */
+    private void player() throws MalformedMessageException {
+        String team = null, id = null;
+        List<String> parts = new ArrayList<>();
+        List<double[]> polars = new ArrayList<>();
+        while (next()) {
+            if (!openChild(2)) continue;
+            if (headIs("team")) {
+                if (team == null) team = firstAtom(2); else close(2);
+            } else if (headIs("id")) {
+                if (id == null) id = firstAtom(2); else close(2);
+            } else if (headEnd > headStart && !headIs("P")) {
+                parts.add(name(headStart, headEnd));
+                polars.add(numbersChild("pol", new double[3], 2));
+            } else {
+                close(2);
+            }
+        }
+        if (team == null || id == null) throw error("(P) needs (team) and (id)");
+        for (int i = 0; i < parts.size(); i++) {
+            seen.add(seenObject("P " + team + " " + id + " " + parts.get(i), polars.get(i)));
+        }
     }
 
-    private static List<?> child(List<?> l, String name) {
-        for (Object o : l) if (head(o).equals(name)) return (List<?>) o;
-        throw new IllegalArgumentException("missing (" + name + ")");
+    private static MjPerception.Seen seenObject(String name, double[] polar) {
+        return new MjPerception.Seen(name, polar[0], polar[1], polar[2]);
     }
 
-    private static double num(Object o) {
-        if (!(o instanceof String t)) throw new IllegalArgumentException("expected a number");
-        double d = Double.parseDouble(t);
-        if (!Double.isFinite(d)) throw new IllegalArgumentException("non-finite number " + t);
-        return d;
+    /**
+     * The rest of the list {@link #open} entered as the tree parser's List.toString gave it
+     * ("[MIC, [a, b], c]"), which is what {@link MjPerception#heard()} holds.
+     */
+    private StringBuilder render(StringBuilder b, int depth) throws MalformedMessageException {
+        b.append('[');
+        boolean first = headEnd == headStart;
+        b.append(s, headStart, headEnd);
+        while (next()) {
+            if (!first) b.append(", ");
+            first = false;
+            if (c[p] == '(') {
+                open(depth + 1);
+                render(b, depth + 1);
+            } else {
+                int start = p;
+                skipAtom();
+                b.append(s, start, p);
+            }
+        }
+        return b.append(']');
     }
 
-    private static String atom(Object o) {
-        if (!(o instanceof String t)) throw new IllegalArgumentException("expected an atom");
-        return t;
-    }
+    // --- children of the list being read (its head consumed) ---
 
-    private static double[] nums(List<?> l, int n) {
-        if (l.size() != n + 1) throw new IllegalArgumentException("(" + head(l) + ") needs " + n + " numbers");
-        double[] v = new double[n];
-        for (int i = 0; i < n; i++) v[i] = num(l.get(i + 1));
+    /** Reads the rest of a list at depth: v filled from its first child headed name; others are skipped. */
+    private double[] numbersChild(String name, double[] v, int depth) throws MalformedMessageException {
+        boolean found = false;
+        while (next()) {
+            if (!openChild(depth + 1)) continue;
+            if (!found && headIs(name)) {
+                numbers(v);
+                found = true;
+            } else {
+                close(depth + 1);
+            }
+        }
+        if (!found) throw error("missing (" + name + ")");
         return v;
     }
 
-    private static MjPerception build(List<Object> top) {
-        double time = Double.NaN, gt = Double.NaN;
-        String pm = null, tl = null, tr = null;
-        int sl = 0, sr = 0;
-        double[] quat = null, pos = null, gyr = null, acc = null;
-        Map<String, double[]> joints = new LinkedHashMap<>();
-        Map<String, Integer> touch = new LinkedHashMap<>();
-        List<MjPerception.Seen> seen = new ArrayList<>();
-        List<String> heard = new ArrayList<>();
-        for (Object o : top) {
-            List<?> l = (List<?>) o;
-            switch (head(o)) {
-                case "time" -> time = nums(child(l, "now"), 1)[0];
-                case "GS" -> {
-                    for (Object c : l) {
-                        if (!(c instanceof List<?> cl) || cl.size() < 2) continue;
-                        switch (head(c)) {
-                            case "t" -> gt = num(cl.get(1));
-                            case "pm" -> pm = atom(cl.get(1));
-                            case "tl" -> tl = atom(cl.get(1));
-                            case "tr" -> tr = atom(cl.get(1));
-                            case "sl" -> sl = (int) num(cl.get(1));
-                            case "sr" -> sr = (int) num(cl.get(1));
-                            default -> { }
-                        }
-                    }
-                }
-                case "quat" -> quat = nums(child(l, "q"), 4);
-                case "pos" -> pos = nums(child(l, "p"), 3);
-                case "GYR" -> gyr = nums(child(l, "rt"), 3);
-                case "ACC" -> acc = nums(child(l, "a"), 3);
-                case "HJ" -> joints.put(atom(nums1(child(l, "n"))),
-                        new double[] {nums(child(l, "ax"), 1)[0], nums(child(l, "vx"), 1)[0]});
-                case "TCH" -> {
-                    if (l.size() < 5) throw new IllegalArgumentException("(TCH n name val 0|1) too short");
-                    touch.put(atom(l.get(2)), (int) num(l.get(4)));
-                }
-                case "See" -> {
-                    for (Object c : l.subList(1, l.size())) {
-                        if (!(c instanceof List<?> cl)) continue;
-                        String h = head(c);
-                        if (h.equals("P")) {
-                            String team = atom(child(cl, "team").get(1));
-                            String id = atom(child(cl, "id").get(1));
-                            for (Object part : cl) {
-                                String ph = head(part);
-                                if (ph.isEmpty() || ph.equals("P") || ph.equals("team") || ph.equals("id")) continue;
-                                double[] v = nums(child((List<?>) part, "pol"), 3);
-                                seen.add(new MjPerception.Seen("P " + team + " " + id + " " + ph, v[0], v[1], v[2]));
-                            }
-                        } else if (!h.isEmpty()) {
-                            double[] v = nums(child(cl, "pol"), 3);
-                            seen.add(new MjPerception.Seen(h, v[0], v[1], v[2]));
-                        }
-                    }
-                }
-                case "MIC" -> heard.add(l.toString());
-                default -> { }
-            }
+    /** The rest of a list that must hold exactly v.length numbers after its head, into v. */
+    private void numbers(double[] v) throws MalformedMessageException {
+        for (int i = 0; i < v.length; i++) {
+            if (!next()) throw error("needs " + v.length + " numbers");
+            if (c[p] == '(') throw error("expected a number");
+            v[i] = number();
         }
-        return new MjPerception(time, gt, pm, tl, tr, sl, sr, quat, pos, gyr, acc, joints, touch, seen, heard);
+        if (next()) throw error("needs " + v.length + " numbers");
     }
 
-    private static Object nums1(List<?> l) {
-        if (l.size() != 2) throw new IllegalArgumentException("(n NAME) expected");
-        return l.get(1);
+    /** The rest of a list that must hold exactly one number after its head. */
+    private double singleNumber() throws MalformedMessageException {
+        if (!next() || c[p] == '(') throw error("expected one number");
+        double v = number();
+        if (next()) throw error("expected one number");
+        return v;
+    }
+
+    /** The rest of a list that must hold exactly one atom after its head. */
+    private String singleAtom() throws MalformedMessageException {
+        if (!next() || c[p] == '(') throw error("(n NAME) expected");
+        String a = atom();
+        if (next()) throw error("(n NAME) expected");
+        return a;
+    }
+
+    /** The rest of a list at depth whose first element after the head must be an atom; the rest is skipped. */
+    private String firstAtom(int depth) throws MalformedMessageException {
+        if (!next() || c[p] == '(') throw error("expected an atom");
+        String a = atom();
+        close(depth);
+        return a;
+    }
+
+    // --- the reader ---
+
+    /** At an element: a list is entered ({@link #open}, true); an atom is skipped (false). */
+    private boolean openChild(int depth) throws MalformedMessageException {
+        if (c[p] != '(') {
+            skipAtom();
+            return false;
+        }
+        open(depth);
+        return true;
+    }
+
+    /** At '(': enters the list (at depth; the top-level ones are 0) and reads its head atom, if it has one. */
+    private void open(int depth) throws MalformedMessageException {
+        if (depth > MAX_DEPTH) throw error("nesting too deep");
+        p++;
+        ws();
+        headStart = p;
+        if (p < n && c[p] != '(' && c[p] != ')') skipAtom();
+        headEnd = p;
+    }
+
+    private boolean headIs(String name) {
+        return headEnd - headStart == name.length() && s.startsWith(name, headStart);
+    }
+
+    /** Moves to the next element of the list being read: true there, false past its ')'. */
+    private boolean next() throws MalformedMessageException {
+        ws();
+        if (p >= n) throw error("unexpected end, ')' missing");
+        if (c[p] != ')') return true;
+        p++;
+        return false;
+    }
+
+    /** Skips the rest of the list being read (at depth), past its ')'. */
+    private void close(int depth) throws MalformedMessageException {
+        while (next()) {
+            if (c[p] == '(') skipList(depth + 1); else skipAtom();
+        }
+    }
+
+    private void skipList(int depth) throws MalformedMessageException {
+        if (depth > MAX_DEPTH) throw error("nesting too deep");
+        p++;
+        close(depth);
+    }
+
+    // The scanning loops keep the position in a local (the JIT then keeps it in a register).
+
+    private void ws() {
+        int i = p;
+        while (i < n && whitespace(c[i])) i++;
+        p = i;
+    }
+
+    private void skipAtom() {
+        int i = p;
+        while (!atomEnds(i)) i++;
+        p = i;
+    }
+
+    private boolean atomEnds(int i) {
+        return i >= n || c[i] == '(' || c[i] == ')' || whitespace(c[i]);
+    }
+
+    private String atom() {
+        int start = p;
+        skipAtom();
+        return name(start, p);
+    }
+
+    /**
+     * s.substring(start, end), the same String again for the same text: the names (joints, markers, play
+     * mode) recur in every message, so a small cache saves a copy per name. Two slots per hash, the newer
+     * name first (the T1's ~50 names share a pair of slots rarely, and then both stay).
+     */
+    private String name(int start, int end) {
+        int h = 0;
+        for (int i = start; i < end; i++) h = 31 * h + c[i];
+        int slot = (h ^ h >>> 9) & (names.length - 2);
+        for (int k = slot; k <= slot + 1; k++) {
+            String cached = names[k];
+            if (cached != null && cached.length() == end - start && s.startsWith(cached, start)) return cached;
+        }
+        names[slot + 1] = names[slot];
+        return names[slot] = s.substring(start, end);
+    }
+
+    /**
+     * The atom at p as a finite number. [-]digits[.digits] with at most 15 digits is read here: the digits
+     * as a long and the power of ten are exact doubles, so the one division is correctly rounded, exactly
+     * Double.parseDouble's result. Any other form (exponent, more digits, "5.", junk) goes to Double.parseDouble.
+     */
+    private double number() throws MalformedMessageException {
+        int start = p, i = p;
+        boolean negative = c[i] == '-';
+        if (negative) i++;
+        long digits = 0;
+        int count = 0, point = -1;
+        for (; i < n; i++) {
+            char ch = c[i];
+            if (ch >= '0' && ch <= '9') {
+                digits = digits * 10 + (ch - '0');
+                count++;
+            } else if (ch == '.' && point < 0 && count > 0) {
+                point = count;
+            } else {
+                break;
+            }
+        }
+        p = i;
+        if (atomEnds(i) && count > 0 && count <= 15 && point != count) {
+            double v = point < 0 ? digits : digits / POW10[count - point];
+            return negative ? -v : v;
+        }
+        skipAtom();
+        return parseDouble(start, p);
+    }
+
+    private double parseDouble(int start, int end) throws MalformedMessageException {
+        double d;
+        try {
+            d = Double.parseDouble(s.substring(start, end));
+        } catch (NumberFormatException e) {
+            throw new MalformedMessageException("bad number " + s.substring(start, end), start);
+        }
+        if (!Double.isFinite(d)) {
+            throw new MalformedMessageException("non-finite number " + s.substring(start, end), start);
+        }
+        return d;
+    }
+
+    /** Character.isWhitespace, with the space and the printable ASCII (never white) answered without the lookup. */
+    private static boolean whitespace(char c) {
+        return c == ' ' || (c < ' ' || c >= 0x7F) && Character.isWhitespace(c);
+    }
+
+    private MalformedMessageException error(String reason) {
+        return new MalformedMessageException(reason, p);
     }
 }
