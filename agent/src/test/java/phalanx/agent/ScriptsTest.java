@@ -44,6 +44,26 @@ class ScriptsTest {
     }
 
     @Test
+    void playRefusesBadArgumentsBeforeStartingAnything() throws Exception {
+        Run r = run("bash", "scripts/play.sh", "--bogus");
+        assertEquals(2, r.status());
+        assertTrue(r.output().contains("unknown argument --bogus"), r.output());
+        r = run("bash", "scripts/play.sh", "--server", "webots");
+        assertEquals(2, r.status());
+        assertTrue(r.output().contains("--server must be auto, simspark or mj, got 'webots'"), r.output());
+        r = run("bash", "scripts/play.sh", "--halves", "3");
+        assertEquals(2, r.status());
+        assertTrue(r.output().contains("--halves must be 1 or 2"), r.output());
+    }
+
+    @Test
+    void startWithMjSaysHowToGetRcssservermjWhenNoneListens() throws Exception {
+        Run r = run("bash", "scripts/start.sh", "127.0.0.1", String.valueOf(freePort()), "--mj");
+        assertEquals(3, r.status());
+        assertTrue(r.output().contains("no rcssservermj is listening") && r.output().contains(".venv/bin/rcssservermj"), r.output());
+    }
+
+    @Test
     void startSaysHowToGetTheServerWhenNoneListens() throws Exception {
         Run r = run("bash", "scripts/start.sh", "127.0.0.1", String.valueOf(freePort()));
         assertEquals(3, r.status());
