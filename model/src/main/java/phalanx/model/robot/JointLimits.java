@@ -12,18 +12,12 @@ public final class JointLimits {
     private static final double[] MAX = new double[Joint.COUNT];
 
     static {
-        set(Joint.HJ1, -120, 120); set(Joint.HJ2, -45, 45);
-        set(Joint.LAJ1, -120, 120); set(Joint.RAJ1, -120, 120);
-        set(Joint.LAJ2, -1, 95); set(Joint.RAJ2, -95, 1);
-        set(Joint.LAJ3, -120, 120); set(Joint.RAJ3, -120, 120);
-        set(Joint.LAJ4, -90, 1); set(Joint.RAJ4, -1, 90);
-        set(Joint.LLJ1, -90, 1); set(Joint.RLJ1, -90, 1);
-        set(Joint.LLJ2, -25, 45); set(Joint.RLJ2, -45, 25);
-        set(Joint.LLJ3, -25, 100); set(Joint.RLJ3, -25, 100);
-        set(Joint.LLJ4, -130, 1); set(Joint.RLJ4, -130, 1);
-        set(Joint.LLJ5, -45, 75); set(Joint.RLJ5, -45, 75);
-        set(Joint.LLJ6, -45, 25); set(Joint.RLJ6, -25, 45);
-        set(Joint.LLJ7, -90, 90); set(Joint.RLJ7, -90, 90);
+        RobotTable t = RobotTable.load("nao-joints.tsv", 3);
+        for (int i = 0; i < t.size(); i++) {
+            Joint j = Joint.byName(t.text(i, 0));
+            if (j == null) throw new IllegalStateException("robot table nao-joints.tsv: unknown joint " + t.text(i, 0));
+            set(j, t.number(i, 1), t.number(i, 2));
+        }
     }
 
     private JointLimits() {}

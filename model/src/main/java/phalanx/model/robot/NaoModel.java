@@ -6,10 +6,10 @@ import phalanx.comm.perception.JointAngles;
 /**
  * The simulated Nao's lengths per heterogeneous robot type 0-4, in metres: the one description of the
  * body that localization (camera height, leg odometry), motion (leg kinematics) and the agent read.
- * Source: rcssserver3d 0.7.3 {@code rsg/agent/nao/naoleg.rsg}, {@code naoneckhead.rsg} and the type
- * table of {@code naorobottypes.rb} (hip-knee = -ThighRelHip2_Z + 0.08, knee-ankle = 0.045 -
- * AnkleRelShank_Z); checked against the standing torso heights in the recordings README (0.3839 m for
- * types 0/2/4, 0.4205 for type 1, 0.4396 for type 3). Joint ranges: {@link JointLimits}; the camera
+ * The per-type lengths are data (resources phalanx/model/robots/nao-types.tsv, README there: rcssserver3d 0.7.3
+ * {@code naoleg.rsg} and {@code naorobottypes.rb}); checked against the standing torso heights in the recordings
+ * README (0.3839 m for types 0/2/4, 0.4205 for type 1, 0.4396 for type 3). The fixed offsets below come from
+ * {@code naoneckhead.rsg} and {@code naoleg.rsg}. Joint ranges: {@link JointLimits}; the camera
  * height from the legs: {@link CameraHeight}.
  *
  * @param type         robot type 0-4 (type 0 is plain nao.rsg)
@@ -32,13 +32,19 @@ public record NaoModel(int type, double thigh, double shank, double hipHalfWidth
     /** Torso centre to the camera (head centre) with the head level (M1 monitor: 0.5379 - 0.3829). */
     private static final double CAMERA_ABOVE_TORSO = NECK_ABOVE_TORSO + HEAD_ABOVE_NECK;
 
-    private static final NaoModel[] TYPES = {
-            new NaoModel(0, 0.12, 0.10, 0.055),
-            new NaoModel(1, 0.05832 + 0.08, 0.045 + 0.07332, 0.055),
-            new NaoModel(2, 0.12, 0.10, 0.055),
-            new NaoModel(3, 0.067868424 + 0.08, 0.045 + 0.082868424, 0.072954143),
-            new NaoModel(4, 0.12, 0.10, 0.055),
-    };
+    /** Types 0-4 in order, from robots/nao-types.tsv. */
+    private static final NaoModel[] TYPES = load();
+
+    private static NaoModel[] load() {
+        RobotTable t = RobotTable.load("nao-types.tsv", 4);
+        NaoModel[] types = new NaoModel[t.size()];
+        for (int i = 0; i < t.size(); i++) {
+            int type = (int) t.number(i, 0);
+            if (type != i) throw new IllegalStateException("robot table nao-types.tsv: type " + type + " in row " + i);
+            types[i] = new NaoModel(type, t.number(i, 1), t.number(i, 2), t.number(i, 3));
+        }
+        return types;
+    }
 
     /** Robot type 0, plain nao.rsg. */
     public static final NaoModel TYPE_0 = TYPES[0];

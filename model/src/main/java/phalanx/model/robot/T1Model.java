@@ -6,16 +6,24 @@ package phalanx.model.robot;
  * camera site its vision is measured from (sim/simulation.py: polar coordinates in the camera site's frame).
  */
 public final class T1Model {
-    /** robot.xml body H1 (head yaw, axis z) in the torso. */
-    static final double[] YAW_IN_TORSO = {0.0625, 0, 0.243};
+    private static final RobotTable CHAIN = RobotTable.load("t1-camera.tsv", 4);
+    /** robot.xml body H1 (head yaw, axis z) in the torso (robots/t1-camera.tsv). */
+    static final double[] YAW_IN_TORSO = link("head_yaw_in_torso");
     /** Body H2 (head pitch, axis y: positive looks down) in H1. */
-    static final double[] PITCH_IN_YAW = {0, 0, 0.06185};
+    static final double[] PITCH_IN_YAW = link("head_pitch_in_yaw");
     /** Site "camera" in H2. */
-    static final double[] CAMERA_IN_PITCH = {0.05, 0, 0.12};
+    static final double[] CAMERA_IN_PITCH = link("camera_in_pitch");
     /** The torso body's height in the model as built, standing straight. */
     public static final double TORSO_HEIGHT = 0.6735;
 
     private T1Model() {}
+
+    private static double[] link(String name) {
+        for (int i = 0; i < CHAIN.size(); i++) {
+            if (CHAIN.text(i, 0).equals(name)) return new double[] {CHAIN.number(i, 1), CHAIN.number(i, 2), CHAIN.number(i, 3)};
+        }
+        throw new IllegalStateException("robot table t1-camera.tsv has no " + name);
+    }
 
     /**
      * Where a point seen at polar (distance m, azimuth °, elevation °) is in the world, from the torso's world
