@@ -56,6 +56,13 @@ public final class T1Model {
         return new double[] {Math.atan2(r[2][1], r[2][2]), Math.asin(Math.max(-1, Math.min(1, -r[2][0])))};
     }
 
+    /** The quaternion with the same roll and pitch and no yaw (R = Ry(pitch) Rx(roll)): what an IMU alone knows. */
+    public static double[] withoutYaw(double[] quat) {
+        double[] rp = rollPitch(quat);
+        double cr = Math.cos(rp[0] / 2), sr = Math.sin(rp[0] / 2), cp = Math.cos(rp[1] / 2), sp = Math.sin(rp[1] / 2);
+        return new double[] {cp * cr, cp * sr, sp * cr, -sp * sr};
+    }
+
     /** The z component of the torso's up axis: 1 upright, 0 lying. */
     public static double uprightness(double[] quat) {
         return rotation(quat)[2][2];

@@ -56,6 +56,14 @@ class T1ModelTest {
     }
 
     @Test
+    void withoutYawKeepsRollAndPitchAndDropsTheHeading() {
+        double[] q = {0.9, 0.1, -0.2, 0.38};   // some tilted, turned torso (normalised inside)
+        double[] level = T1Model.withoutYaw(q);
+        assertArrayEquals(T1Model.rollPitch(q), T1Model.rollPitch(level), 1e-9);
+        assertEquals(0, T1Model.headingDeg(level), 1e-9);
+    }
+
+    @Test
     void aPointStraightAheadOfAnUprightRobotIsInFrontOfItsCamera() {
         double[] w = T1Model.seenToWorld(new double[] {1, 0, 0, 0}, new double[] {1, 2, 0.6735}, 0, 0, 2, 0, 0);
         // camera at x = 1 + 0.0625 + 0.05, z = 0.6735 + 0.243 + 0.06185 + 0.12
