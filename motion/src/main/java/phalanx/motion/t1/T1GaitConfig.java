@@ -39,6 +39,12 @@ package phalanx.motion.t1;
  * @param pitchRateGain     ankle pitch correction per rad/s of torso pitch rate
  * @param rollGain          ankle/hip roll correction per rad of torso roll
  * @param rollRateGain      ankle/hip roll correction per rad/s of torso roll rate
+ * @param stepPitchGain     swing foot target x shift per rad of torso pitch error, m/rad
+ * @param stepRollGain      swing foot target y shift per rad of torso roll (roll > 0: right side down), m/rad
+ * @param comHeight         pendulum height for the step shapes, m (CoM about 0.55 m up when crouched)
+ * @param lipmBlend         0: the support foot moves back linearly; 1: with the pendulum's sinh shape
+ * @param hipPitchGain      hip pitch correction per rad of torso pitch error (rad/rad)
+ * @param hipRollGain       hip roll correction per rad of torso roll (rad/rad)
  * @param torsoPitchDeg     wanted torso pitch (forward lean, deg) for the feedback's reference
  * @param dt                control cycle, s (rcssservermj: 0.02)
  */
@@ -51,6 +57,9 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                            double legKp, double legKd, double ankleKp, double ankleKd, double armKp, double armKd,
                            double shoulderRollDeg, double elbowDeg,
                            double pitchGain, double pitchRateGain, double rollGain, double rollRateGain,
+                           double stepPitchGain, double stepRollGain,
+                           double comHeight, double lipmBlend,
+                           double hipPitchGain, double hipRollGain,
                            double torsoPitchDeg, double dt) {
 
     public static T1GaitConfig defaults() {
@@ -62,7 +71,10 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                 0.8, 0.3, 90, 0.5,
                 200, 5, 200, 2, 60, 2,
                 -75, 0,
-                0.0, 0.0, 0.0, 0.0,
+                1.0, 0.05, 0.0, 0.0,
+                0.0, 0.0,
+                0.55, 1.0,
+                0.0, 0.0,
                 0.0, 0.02);
     }
 
