@@ -39,6 +39,7 @@ import java.util.Optional;
 public final class T1Bench {
     static final double FALL_TILT_DEG = 60;
     static final double SETTLE_S = 2.0;
+    static final int TRACE_EVERY = Integer.getInteger("t1.trace", 25);
 
     private final FrameReader in;
     private final FrameWriter out;
@@ -121,6 +122,7 @@ public final class T1Bench {
 
     /** Beams to (x, y, heading) and stands for SETTLE_S; returns false if it fell meanwhile. */
     private boolean reset(T1Gait gait, double x, double y, double thetaDeg) throws IOException {
+        gait.feedback(0, 0, 0, 0); // the fallen attitude must not steer the first cycles after the beam
         cycle(MjActions.beam(x, y, thetaDeg));
         cycle(joints(gait.stand()));
         cycle(joints(gait.stand()));
@@ -163,7 +165,7 @@ public final class T1Bench {
             while (dy < -Math.PI) dy += 2 * Math.PI;
             segYaw += dy;
             lastYaw = yw;
-            if (verbose && i % 25 == 0) trace(trial, time);
+            if (verbose && i % TRACE_EVERY == 0) trace(trial, time);
             boolean fell = tiltDeg(p.quat()) > FALL_TILT_DEG;
             if (fell || i == n - 1) {
                 // the segment's progress in the start heading's frame

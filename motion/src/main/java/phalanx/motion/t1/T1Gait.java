@@ -17,6 +17,9 @@ public final class T1Gait {
     private static final String[] LEFT = {"lle1", "lle2", "lle3", "lle4", "lle5", "lle6"};
     private static final String[] RIGHT = {"rle1", "rle2", "rle3", "rle4", "rle5", "rle6"};
 
+    /** Largest feedback correction of a joint, rad. */
+    static final double MAX_CORRECTION = 0.2;
+
     private final T1GaitConfig c;
     private final T1LegKinematics leftLeg, rightLeg;
     private final double[] qLeft = new double[6], qRight = new double[6];
@@ -82,16 +85,26 @@ public final class T1Gait {
         int sup = leftSupport ? 0 : 3, sw = leftSupport ? 3 : 0;
         // support foot: linearly back at the commanded velocity
         double[] supEnd = {-vx * ts / 2, -vy * ts / 2, -turn * ts / 2};
-        double[] swEnd = {vx * ts / 2, vy * ts / 2, turn * ts / 2};
+        // capture-step-like feedback: step further towards where the torso leans
+        double lean = pitch - Math.toRadians(c.torsoPitchDeg());
+        double[] swEnd = {vx * ts / 2 + clamp(c.stepPitchGain() * lean, -0.08, 0.08),
+                vy * ts / 2 - clamp(c.stepRollGain() * roll, -0.05, 0.05), turn * ts / 2};
         double d = c.doubleSupport();
         double u = clamp((s - d / 2) / (1 - d), 0, 1);
         double smooth = 0.5 - 0.5 * Math.cos(Math.PI * u);
+        // the support foot moves back with the linear inverted pendulum's shape (sinh; the ankle then needs little
+        // torque: its 20 N m cannot hold the CoM far from it), blended with a straight line
+        double tc = Math.sqrt(c.comHeight() / 9.81), half = ts / (2 * tc);
+        double lip = 0.5 + 0.5 * Math.sinh((s - 0.5) * ts / tc) / Math.sinh(half);
+        double along = (1 - c.lipmBlend()) * s + c.lipmBlend() * lip;
         for (int k = 0; k < 3; k++) {
-            foot[sup + k] = footStart[sup + k] + (supEnd[k] - footStart[sup + k]) * s;
+            foot[sup + k] = footStart[sup + k] + (supEnd[k] - footStart[sup + k]) * (k == 2 ? s : along);
             foot[sw + k] = footStart[sw + k] + (swEnd[k] - footStart[sw + k]) * smooth;
         }
         double ramp = Math.min(1.0, (steps + s) / 1.0);
-        double sway = ramp * c.sway() * Math.sin(Math.PI * s) * (leftSupport ? 1 : -1);
+        // lateral sway over the support foot: the pendulum's cosh shape, 0 at the step's ends, c.sway() mid-step
+        double shape = (1 - Math.cosh((s - 0.5) * ts / tc) / Math.cosh(half)) / (1 - 1 / Math.cosh(half));
+        double sway = ramp * c.sway() * shape * (leftSupport ? 1 : -1);
         double lift = ramp * c.lift() * Math.sin(Math.PI * u);
         double liftL = leftSupport ? 0 : lift, liftR = leftSupport ? lift : 0;
         return pose(foot[0], foot[1], foot[2], foot[3], foot[4], foot[5], sway, liftL, liftR, ramp, true);
@@ -121,12 +134,19 @@ public final class T1Gait {
         double[] l = qLeft.clone(), r = qRight.clone();
         // feedback: torso pitching forward (pitch > 0) -> ankles push toes down (ankle pitch more negative?)
         double pe = pitch - Math.toRadians(c.torsoPitchDeg());
-        double pc = c.pitchGain() * pe + c.pitchRateGain() * pitchRate;
-        double rc = c.rollGain() * roll + c.rollRateGain() * rollRate;
+        double pc = clamp(c.pitchGain() * pe + c.pitchRateGain() * pitchRate, -MAX_CORRECTION, MAX_CORRECTION);
+        double rc = clamp(c.rollGain() * roll + c.rollRateGain() * rollRate, -MAX_CORRECTION, MAX_CORRECTION);
         l[4] += pc;
         r[4] += pc;
         l[5] -= rc;
         r[5] -= rc;
+        // hip strategy: torso pitched forward (pitch > 0) -> hips extend to bring it back; rolled -> hip roll
+        double hp = clamp(c.hipPitchGain() * pe, -MAX_CORRECTION, MAX_CORRECTION);
+        double hr = clamp(c.hipRollGain() * roll, -MAX_CORRECTION, MAX_CORRECTION);
+        l[0] += hp;
+        r[0] += hp;
+        l[1] += hr;
+        r[1] += hr;
         List<JointCommand> out = new ArrayList<>(23);
         double[][] rl = leftLeg.ranges(), rr = rightLeg.ranges();
         for (int k = 0; k < 6; k++) {

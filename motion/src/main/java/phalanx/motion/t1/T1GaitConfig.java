@@ -39,6 +39,12 @@ package phalanx.motion.t1;
  * @param pitchRateGain     ankle pitch correction per rad/s of torso pitch rate
  * @param rollGain          ankle/hip roll correction per rad of torso roll
  * @param rollRateGain      ankle/hip roll correction per rad/s of torso roll rate
+ * @param stepPitchGain     swing foot target x shift per rad of torso pitch error, m/rad
+ * @param stepRollGain      swing foot target y shift per rad of torso roll (roll > 0: right side down), m/rad
+ * @param comHeight         pendulum height for the step shapes, m (CoM about 0.55 m up when crouched)
+ * @param lipmBlend         0: the support foot moves back linearly; 1: with the pendulum's sinh shape
+ * @param hipPitchGain      hip pitch correction per rad of torso pitch error (rad/rad)
+ * @param hipRollGain       hip roll correction per rad of torso roll (rad/rad)
  * @param torsoPitchDeg     wanted torso pitch (forward lean, deg) for the feedback's reference
  * @param dt                control cycle, s (rcssservermj: 0.02)
  */
@@ -51,19 +57,31 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                            double legKp, double legKd, double ankleKp, double ankleKd, double armKp, double armKd,
                            double shoulderRollDeg, double elbowDeg,
                            double pitchGain, double pitchRateGain, double rollGain, double rollRateGain,
+                           double stepPitchGain, double stepRollGain,
+                           double comHeight, double lipmBlend,
+                           double hipPitchGain, double hipRollGain,
                            double torsoPitchDeg, double dt) {
 
+    /**
+     * Geometry from robot.xml; gains: hips/knees booster_gym's 200, ankles raised to 200 (at 80 the 20 N m ankle
+     * let the stand fall forward); arms down by hand. The gait values marked "search" came from a (1+1) random
+     * search with the bench (3 fields perturbed per candidate, score = measured speed - 0.1 x falls over a
+     * 20 s walk; 32 rounds at 0.4 m/s commanded from the hand-set start, then 7 at 0.6 m/s; motion/README.md).
+     */
     public static T1GaitConfig defaults() {
-        return new T1GaitConfig(0.0625, -0.1155, 0.106, 0.02, 0.081854,
-                -0.014, 0.134, 0.28, 0.012,
-                0.00025, 0.03,
-                0.045, 0.106, -0.60,
-                0.30, 0.2, 0.035, 0.05,
-                0.8, 0.3, 90, 0.5,
-                200, 5, 200, 2, 60, 2,
-                -75, 0,
-                0.0, 0.0, 0.0, 0.0,
-                0.0, 0.02);
+        return new T1GaitConfig(0.0625, -0.1155, 0.106, 0.02, 0.081854,     // robot.xml
+                -0.014, 0.134, 0.28, 0.012,                                  // robot.xml
+                0.00025, 0.03,                                               // robot.xml
+                0.0386, 0.0873, -0.5502,                                     // search (hand start 0.045, 0.106, -0.60)
+                0.3050, 0.1824, 0.0226, 0.0700,                              // search (hand start 0.30, 0.2, 0.035, 0.05)
+                0.8, 0.3, 90, 0.5,                                           // by hand
+                200, 5, 200, 2, 60, 2,                                       // see above
+                -75, 0,                                                      // by hand
+                1.6653, 0.0699, -0.1480, -0.0265,                            // search (hand start 1.0, 0.05, 0, 0)
+                0.1459, -0.3770,                                             // search (hand start 0, 0)
+                0.55, 0.9254,                                                // CoM height estimate; search (start 1)
+                0.5428, 0.3583,                                              // search (start 0, 0)
+                -2.8147, 0.02);                                              // search (start 0); rcssservermj cycle
     }
 
     /** A copy with a named field changed (for the bench's --set name=value). */

@@ -64,6 +64,19 @@ public final class T1LegKinematics {
      * joint ranges). Returns the remaining position error in metres.
      */
     public double inverse(double x, double y, double z, double yaw, double[] q) {
+        double err = solve(x, y, z, yaw, q);
+        if (err > 1e-4) { // stuck at a joint limit from a far warm start: once more from the crouch
+            double[] seed = {-0.3, 0, 0, 0.6, -0.3, 0};
+            double again = solve(x, y, z, yaw, seed);
+            if (again < err) {
+                System.arraycopy(seed, 0, q, 0, 6);
+                err = again;
+            }
+        }
+        return err;
+    }
+
+    private double solve(double x, double y, double z, double yaw, double[] q) {
         double cy = Math.cos(yaw), sy = Math.sin(yaw);
         double[] rt = {cy, -sy, 0, sy, cy, 0, 0, 0, 1};
         double[][] axes = new double[6][3], origins = new double[6][3];
