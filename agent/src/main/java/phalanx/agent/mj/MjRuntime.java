@@ -53,7 +53,10 @@ public final class MjRuntime {
             gait.feedback(rp[0], rp[1], Math.toRadians(p.gyro()[0]), Math.toRadians(p.gyro()[1]));
         }
         MjBehaviour.Intent intent = behaviour.decide(world);
-        List<JointCommand> joints = intent.walks() ? gait.next(intent.vx(), intent.vy(), intent.turnDegPerS()) : gait.stand();
+        // Stand still only while the referee lets robots beam; in play the gait keeps stepping, also on the spot
+        // (a walking T1 switched straight to the still pose fell over the ball: seen in MjTeamTest).
+        List<JointCommand> joints = world.beamAllowed() || !world.upright() ? gait.stand()
+                : gait.next(intent.vx(), intent.vy(), intent.turnDegPerS());
         for (JointCommand j : joints) actions.joint(j.actuator(), j.qDeg(), j.dqDeg(), j.kp(), j.kd(), j.tau());
         String reply = actions.build();
         last = reply;
