@@ -41,18 +41,21 @@ import java.util.List;
  * up to 16 frames (4 remaining bits, where SimSpark has 3): 6 field players of 7 v 7 with a pose each
  * take 6 frames, 10 of 11 v 11 take 10. Target poses keep their full grid, since a player walks to them.
  *
- * <p>The check makes a forged message pass with probability 2^-24 (6 x 10^-8; opponents' messages reach us
- * unlabelled here, so this is also the chance that one of theirs is taken for ours, and the wrong-time
- * test halves it). Binding it to the said cycle rejects a replay: measured on rcsssmj 0.2.1, a say sent
- * in reply to perception c is heard in perception c + 2 (docs/rcssservermj.md), so a replay arrives 4
- * cycles late at the earliest while we accept at most 3. Cycles are counted on the server's clock by both
- * sides, see {@link #cycleOf}.
+ * <p>The check makes a forged message pass with probability 2^-24 (6 x 10^-8). rcsssmj labels no message
+ * with a team, so the check is also all that tells an opponent's message from ours: one in our layout on
+ * our clock passes with the same 2^-24 (7 opponents saying a forged Complete every cycle to our 6
+ * listeners for 10 minutes of play: at most 7 x 30 000 x 6 x 2^-24 = 0.08 accepted); random bytes must
+ * also fit the said-cycle bits (1/2) and the zero padding (a Complete leaves 1 bit, the other types more),
+ * of the order of 2^-29. Binding the check to the said cycle rejects a replay: measured on rcsssmj 0.2.1,
+ * a say sent in reply to perception c is heard in perception c + 2 (docs/rcssservermj.md), so a replay
+ * arrives 4 cycles late at the earliest while we accept at most 3. Cycles are counted on the server's
+ * clock by both sides, see {@link #cycleOf}.
  *
  * <p>Not thread-safe: each player owns one codec.
  */
 public final class MjTeamMessageCodec {
-    /** rcsssmj 0.2.1 delivers a heard message only if it has at most this many bytes. */
-    public static final int FRAME_BYTES = 10;
+    /** rcsssmj 0.2.1 delivers a heard message only if it has at most this many bytes (MjActions.MAX_SAY_BYTES). */
+    static final int FRAME_BYTES = 10;
     static final int CHECK_BITS = 24;
     static final int CHECK_BYTES = CHECK_BITS / 8;
     static final int BODY_BITS = 8 * FRAME_BYTES - CHECK_BITS;
