@@ -15,7 +15,8 @@ import java.util.Map;
  * numbers the server sends are read in place (exact: at most 15 digits, so one division of two exact doubles
  * rounds as Double.parseDouble does); any other form goes through Double.parseDouble. Unknown nodes are
  * ignored; every defect (truncation, unbalanced parentheses, nesting deeper than 32, a bad number, a missing
- * child) ends in {@link MalformedMessageException}. The results, and which messages are rejected, are those
+ * child) ends in {@link MalformedMessageException}; a MIC pair that is not an azimuth and base64 is only
+ * skipped and counted ({@link MjPerception#heardSkipped}). The results, and which messages are rejected, are those
  * of the tree parser it replaced (TreeReferenceParser in the tests). Not thread-safe: one per thread.
  */
 public final class MjPerceptionParser {
