@@ -20,7 +20,7 @@ class MjBehaviourTest {
         double h = Math.toRadians(yawDeg) / 2;
         List<MjPerception.Seen> seen = ballDistance > 0 ? List.of(new MjPerception.Seen("B", ballDistance, 0, 0)) : List.of();
         return new MjPerception(t, 0, mode, "Phalanx", "Other", 0, 0, new double[] {Math.cos(h), 0, 0, Math.sin(h)},
-                new double[] {x, y, 0.67}, null, null, HEAD, Map.of(), seen, List.of());
+                new double[] {x, y, 0.67}, null, null, HEAD, Map.of(), seen, List.of(), 0);
     }
 
     @Test

@@ -55,7 +55,7 @@ class MjWorldTest {
         MjWorld w = new MjWorld("Other");
         for (MjPerception p : rec.subList(0, 10)) {
             w.update(new MjPerception(p.time(), p.gameTime(), p.playMode(), "Phalanx", "Other", 0, 0, p.quat(), p.pos(),
-                    p.gyro(), p.acc(), p.joints(), p.touch(), p.seen(), p.heard()));
+                    p.gyro(), p.acc(), p.joints(), p.touch(), p.seen(), p.heard(), p.heardSkipped()));
         }
         assertEquals(-1, w.side());
         assertEquals(3, w.self().x(), 0.01);

@@ -1,9 +1,10 @@
 package phalanx.comm.mj;
 
+import java.util.Base64;
 import java.util.List;
 import java.util.Locale;
 
-/** Builds rcssservermj action messages: init, beam, and T1 joint PD commands in degrees. */
+/** Builds rcssservermj action messages: init, beam, T1 joint PD commands in degrees, and say. */
 public final class MjActions {
     /** The T1's actuator names in rcsssmj 0.2.1. */
     public static final List<String> T1_ACTUATORS = List.of("he1", "he2", "lae1", "lae2", "lae3", "lae4",
@@ -28,6 +29,23 @@ public final class MjActions {
         if (!T1_ACTUATORS.contains(actuator)) throw new IllegalArgumentException("unknown T1 actuator " + actuator);
         sb.append('(').append(actuator).append(' ').append(f(qDeg)).append(' ').append(f(dqDeg)).append(' ')
                 .append(f(kp)).append(' ').append(f(kd)).append(' ').append(f(tau)).append(')');
+        return this;
+    }
+
+    /** rcsssmj 0.2.1 delivers a said message only if it has at most this many bytes. */
+    public static final int MAX_SAY_BYTES = 10;
+
+    /**
+     * Appends {@code (SPK say 100 <base64>)}: the message at full volume (the server's gain is volume / 100,
+     * capped at 1). Refuses an empty message (the server broadcasts none) and one of more than
+     * {@value #MAX_SAY_BYTES} bytes (the server would send it but no one would hear it).
+     */
+    public MjActions say(byte[] message) {
+        if (message == null || message.length == 0) throw new IllegalArgumentException("say needs at least one byte");
+        if (message.length > MAX_SAY_BYTES) {
+            throw new IllegalArgumentException("say carries at most " + MAX_SAY_BYTES + " bytes, got " + message.length);
+        }
+        sb.append("(SPK say 100 ").append(Base64.getEncoder().encodeToString(message)).append(')');
         return this;
     }
 

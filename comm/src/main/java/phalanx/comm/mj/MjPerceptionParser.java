@@ -3,6 +3,7 @@ package phalanx.comm.mj;
 import phalanx.comm.sexp.MalformedMessageException;
 
 import java.util.ArrayList;
+import java.util.Base64;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -14,7 +15,8 @@ import java.util.Map;
  * numbers the server sends are read in place (exact: at most 15 digits, so one division of two exact doubles
  * rounds as Double.parseDouble does); any other form goes through Double.parseDouble. Unknown nodes are
  * ignored; every defect (truncation, unbalanced parentheses, nesting deeper than 32, a bad number, a missing
- * child) ends in {@link MalformedMessageException}. The results, and which messages are rejected, are those
+ * child) ends in {@link MalformedMessageException}; a MIC pair that is not an azimuth and base64 is only
+ * skipped and counted ({@link MjPerception#heardSkipped}). The results, and which messages are rejected, are those
  * of the tree parser it replaced (TreeReferenceParser in the tests). Not thread-safe: one per thread.
  */
 public final class MjPerceptionParser {
@@ -41,7 +43,8 @@ public final class MjPerceptionParser {
     private Map<String, double[]> joints;
     private Map<String, Integer> touch;
     private List<MjPerception.Seen> seen;
-    private List<String> heard;
+    private List<MjPerception.Heard> heard;
+    private int heardSkipped;
 
     public MjPerception parse(String message) throws MalformedMessageException {
         s = message;
@@ -57,6 +60,7 @@ public final class MjPerceptionParser {
         touch = new LinkedHashMap<>();
         seen = new ArrayList<>();
         heard = new ArrayList<>();
+        heardSkipped = 0;
         ws();
         while (p < n) {
             if (c[p] != '(') throw error("expected '('");
@@ -64,7 +68,7 @@ public final class MjPerceptionParser {
             ws();
         }
         return new MjPerception(time, gameTime, playMode, teamLeft, teamRight, scoreLeft, scoreRight,
-                quat, pos, gyro, acc, joints, touch, seen, heard);
+                quat, pos, gyro, acc, joints, touch, seen, heard, heardSkipped);
     }
 
     private void node() throws MalformedMessageException {
@@ -78,7 +82,7 @@ public final class MjPerceptionParser {
         else if (headIs("ACC")) acc = numbersChild("a", new double[3], 0);
         else if (headIs("See")) see();
         else if (headIs("TCH")) touch();
-        else if (headIs("MIC")) heard.add(render(new StringBuilder(), 0).toString());
+        else if (headIs("MIC")) microphone();
         else close(0);
     }
 
@@ -182,26 +186,47 @@ public final class MjPerceptionParser {
     }
 
     /**
-     * The rest of the list {@link #open} entered as the tree parser's List.toString gave it
-     * ("[MIC, [a, b], c]"), which is what {@link MjPerception#heard()} holds.
+     * (MIC NAME (AZIMUTH BASE64) ...), as rcsssmj 0.2.1's MicrophonePerception writes it: atoms (the sensor
+     * name, "hear") are skipped; each list child that is exactly a finite number and valid base64 becomes a
+     * {@link MjPerception.Heard}, any other is skipped and counted in heardSkipped.
      */
-    private StringBuilder render(StringBuilder b, int depth) throws MalformedMessageException {
-        b.append('[');
-        boolean first = headEnd == headStart;
-        b.append(s, headStart, headEnd);
+    private void microphone() throws MalformedMessageException {
         while (next()) {
-            if (!first) b.append(", ");
-            first = false;
-            if (c[p] == '(') {
-                open(depth + 1);
-                render(b, depth + 1);
-            } else {
-                int start = p;
-                skipAtom();
-                b.append(s, start, p);
-            }
+            if (!openChild(1)) continue;
+            double azimuth = lenientNumber(headStart, headEnd);
+            if (!next()) { heardSkipped++; continue; }
+            if (c[p] == '(') { close(1); heardSkipped++; continue; }
+            int start = p;
+            skipAtom();
+            int end = p;
+            if (next()) { close(1); heardSkipped++; continue; }
+            byte[] bytes = Double.isNaN(azimuth) ? null : base64(s, start, end);
+            if (bytes == null) heardSkipped++; else heard.add(new MjPerception.Heard(azimuth, bytes));
         }
-        return b.append(']');
+    }
+
+    /** s[start, end) as a finite number, NaN if it is none (no exception: a bad MIC pair is only skipped). */
+    private double lenientNumber(int start, int end) {
+        if (end == start) return Double.NaN;
+        try {
+            double d = Double.parseDouble(s.substring(start, end));
+            return Double.isFinite(d) ? d : Double.NaN;
+        } catch (NumberFormatException e) {
+            return Double.NaN;
+        }
+    }
+
+    /**
+     * Strict base64 (RFC 4648, padded, as Python's b64encode writes and b64decode(validate=True) reads),
+     * null if t[start, end) is not; shared with the reference parser in the tests.
+     */
+    static byte[] base64(String t, int start, int end) {
+        if (end == start || (end - start) % 4 != 0) return null;
+        try {
+            return Base64.getDecoder().decode(t.substring(start, end));
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
     }
 
     // --- children of the list being read (its head consumed) ---

@@ -18,4 +18,15 @@ class MjActionsTest {
         assertThrows(IllegalArgumentException.class, () -> MjActions.beam(Double.NaN, 0, 0));
         assertThrows(IllegalArgumentException.class, () -> MjActions.init("a b", 1));
     }
+
+    @Test
+    void saysUpToTenBytesAsBase64AtFullVolume() {
+        MjActions a = new MjActions();
+        assertEquals("(SPK say 100 AAECAwQFBgcICQ==)", a.say(new byte[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9}).build());
+        assertEquals("(SPK say 100 +/8=)(lle1 1 0 2 0 0)", a.say(new byte[] {(byte) 0xfb, (byte) 0xff}).joint("lle1", 1, 0, 2, 0, 0).build());
+        assertThrows(IllegalArgumentException.class, () -> a.say(new byte[11]));
+        assertThrows(IllegalArgumentException.class, () -> a.say(new byte[0]));
+        assertThrows(IllegalArgumentException.class, () -> a.say(null));
+        assertEquals("(syn)", a.build());
+    }
 }

@@ -32,7 +32,7 @@ class MjPerceptionParserReferenceTest {
         for (Map.Entry<String, double[]> e : m.joints().entrySet()) {
             b.append(e.getKey()).append('=').append(Arrays.toString(e.getValue())).append(';');
         }
-        b.append('|').append(m.touch()).append('|').append(m.seen()).append('|').append(m.heard());
+        b.append('|').append(m.touch()).append('|').append(m.seen()).append('|').append(m.heard()).append('|').append(m.heardSkipped());
         return b.toString();
     }
 
@@ -60,6 +60,8 @@ class MjPerceptionParserReferenceTest {
             "(See (P (head (pol 1 2 3)) (id 9) (team Us) (team Other) (P 1) ((x)) (id 3)))",
             "(TCH n lf val 1)(TCH n rf val 0 extra (x y))(TCH (n) rf (val) 1)",
             "(MIC (t 12.0) (msg hello) () ((a b) c))(MIC)",
+            "(MIC hear (-90 pQ==)(89 ux1tEw==)(0 +F2GkAJK1r2jQA==))(MIC hear )(MIC hear (90 abc)(90 ab=c)(x AA==)(1e999 AA==))",
+            "(MIC hear (12.5 AAAA) (NaN AA==) (1 AA== x) (1 (AA==)) ((1) AA==) (1) (-0 /+8=))",
             "(time (now 1.0) (now abc))(time (x) (now -0.0))",
             "(GS (t) (pm) (sl 1.9) (sr -2.5) ((t 5)) (q 1) (t 1d) (t .5) (t 5.) (t +3))",
             "(HJ (n a)(ax 1)(vx 2))(HJ (vx 3)(ax 4)(n a)(n b))(HJ (n b)(ax 0x1p3)(vx 1e-3))",

@@ -67,4 +67,24 @@ class MjPerceptionParserTest {
         }
         assertTrue(errors > 1000, "errors " + errors);
     }
+
+    @Test
+    void micPairsAreTypedAndBadOnesSkippedAndCounted() throws Exception {
+        MjPerceptionParser parser = new MjPerceptionParser();
+        MjPerception m = parser.parse("(time (now 1.5))(MIC hear (-90 pQ==)(89 +F2GkAJK1r2jQA==)(12 abc)(x AA==)(5)(7 AA== BB==))");
+        assertEquals(List.of(new MjPerception.Heard(-90, new byte[] {(byte) 0xa5}),
+                new MjPerception.Heard(89, new byte[] {(byte) 0xf8, 0x5d, (byte) 0x86, (byte) 0x90, 0x02, 0x4a, (byte) 0xd6,
+                        (byte) 0xbd, (byte) 0xa3, 0x40})), m.heard());
+        assertEquals(4, m.heardSkipped());
+        MjPerception quiet = parser.parse("(MIC hear )");
+        assertEquals(List.of(), quiet.heard());
+        assertEquals(0, quiet.heardSkipped());
+        // Heard keeps its own copy of the bytes
+        byte[] b = {1, 2};
+        MjPerception.Heard h = new MjPerception.Heard(0, b);
+        b[0] = 9;
+        h.bytes()[1] = 9;
+        assertArrayEquals(new byte[] {1, 2}, h.bytes());
+        assertThrows(MalformedMessageException.class, () -> parser.parse("(MIC hear (1 AA==)"));
+    }
 }

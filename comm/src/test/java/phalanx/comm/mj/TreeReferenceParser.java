@@ -90,7 +90,8 @@ final class TreeReferenceParser {
         Map<String, double[]> joints = new LinkedHashMap<>();
         Map<String, Integer> touch = new LinkedHashMap<>();
         List<MjPerception.Seen> seen = new ArrayList<>();
-        List<String> heard = new ArrayList<>();
+        List<MjPerception.Heard> heard = new ArrayList<>();
+        int heardSkipped = 0;
         for (Object o : top) {
             List<?> l = (List<?>) o;
             switch (head(o)) {
@@ -138,11 +139,26 @@ final class TreeReferenceParser {
                         }
                     }
                 }
-                case "MIC" -> heard.add(l.toString());
+                case "MIC" -> {
+                    for (Object c : l.subList(1, l.size())) {
+                        if (!(c instanceof List<?> pair)) continue;
+                        double az = Double.NaN;
+                        byte[] bytes = null;
+                        if (pair.size() == 2 && pair.get(0) instanceof String a && pair.get(1) instanceof String b) {
+                            try {
+                                az = Double.parseDouble(a);
+                            } catch (NumberFormatException e) {
+                                az = Double.NaN;
+                            }
+                            bytes = Double.isFinite(az) ? MjPerceptionParser.base64(b, 0, b.length()) : null;
+                        }
+                        if (bytes == null) heardSkipped++; else heard.add(new MjPerception.Heard(az, bytes));
+                    }
+                }
                 default -> { }
             }
         }
-        return new MjPerception(time, gt, pm, tl, tr, sl, sr, quat, pos, gyr, acc, joints, touch, seen, heard);
+        return new MjPerception(time, gt, pm, tl, tr, sl, sr, quat, pos, gyr, acc, joints, touch, seen, heard, heardSkipped);
     }
 
     private static Object nums1(List<?> l) {
