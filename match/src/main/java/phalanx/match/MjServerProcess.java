@@ -42,6 +42,8 @@ public final class MjServerProcess {
     private final Path log;
     private volatile ServerConnection monitor;
     private volatile double simTime = -1;
+    private volatile boolean monitorClosed;
+    private volatile String notReady;
     private volatile java.util.function.Consumer<String> listener;
 
     private MjServerProcess(Settings settings, SessionProcess process, Path log) {
@@ -94,24 +96,35 @@ public final class MjServerProcess {
     public boolean awaitReady(long timeoutMillis) throws IOException, InterruptedException {
         long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
         while (!(Files.exists(log) && Files.readString(log).contains("Starting server... DONE!"))) {
-            if (!alive() || System.nanoTime() > deadline) return false;
+            if (!alive()) return notReady("it exited before 'Starting server... DONE!'");
+            if (System.nanoTime() > deadline) return notReady("no 'Starting server... DONE!' within " + timeoutMillis / 1000 + " s");
             Thread.sleep(100);
         }
         long left = Math.max(1, (deadline - System.nanoTime()) / 1_000_000L);
         try {
             monitor = ServerConnection.connect("127.0.0.1", settings.monitorPort(), left);
         } catch (WireException e) {
-            return false;
+            return notReady("its monitor port: " + e.getMessage());
         }
         Thread drain = new Thread(this::drainMonitor, "rcssservermj-monitor");
         drain.setDaemon(true);
         drain.start();
         while (simTime <= 0) {
-            if (!alive() || System.nanoTime() > deadline) return false;
+            if (!alive()) return notReady("it exited after 'Starting server... DONE!'");
+            if (monitorClosed) return notReady("it closed the monitor connection before its first step");
+            if (System.nanoTime() > deadline) return notReady("no simulation step within " + timeoutMillis / 1000 + " s");
             Thread.sleep(20);
         }
         return true;
     }
+
+    private boolean notReady(String why) {
+        notReady = why;
+        return false;
+    }
+
+    /** Why {@link #awaitReady} said no, or null. */
+    public String notReadyReason() { return notReady; }
 
     /** Reads the monitor stream for the server's lifetime (an unread stream would block the server's sends). */
     private void drainMonitor() {
@@ -125,7 +138,7 @@ public final class MjServerProcess {
                 if (l != null) l.accept(m);
             }
         } catch (IOException e) {
-            // the server stopped
+            monitorClosed = true;   // the server stopped
         }
     }
 
