@@ -118,12 +118,12 @@ final class ParallelTournament {
         return c;
     }
 
-    /** True when GNU parallel runs here. */
+    /** True when GNU parallel runs here (not moreutils' program of the same name). */
     static boolean available() {
         try {
             Process p = new ProcessBuilder("parallel", "--version").redirectErrorStream(true).start();
-            p.getInputStream().readAllBytes();
-            return p.waitFor(20, TimeUnit.SECONDS) && p.exitValue() == 0;
+            String v = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            return p.waitFor(20, TimeUnit.SECONDS) && p.exitValue() == 0 && v.contains("GNU parallel");
         } catch (IOException e) {
             return false;
         } catch (InterruptedException e) {
