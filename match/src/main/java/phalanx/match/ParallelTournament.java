@@ -183,7 +183,8 @@ final class ParallelTournament {
         Path failures = out.resolve("failures.log");
         if (Files.exists(failures)) {
             List<String> lines = Files.readAllLines(failures);
-            print.printf(Locale.ROOT, "tournament: %d failed attempt(s) on a host, each retried elsewhere (%s):%n", lines.size(), failures);
+            print.printf(Locale.ROOT, "tournament: %d failed attempt(s) of a game on a host (a host that could not play, or a "
+                    + "stopped job), in %s:%n", lines.size(), failures);
             for (String l : lines) print.println("  " + l);
         }
         int missing = p.fixtures().size() - played;

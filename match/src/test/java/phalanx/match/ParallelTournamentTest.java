@@ -185,7 +185,7 @@ class ParallelTournamentTest {
         for (String l : failures) {
             if (l.contains("host=h2")) assertTrue(startedOnH2.containsKey(l.split(" ")[1]), l);
         }
-        assertTrue(Files.readString(log).contains("failed attempt(s) on a host"), Files.readString(log));
+        assertTrue(Files.readString(log).contains("failed attempt(s) of a game on a host"), Files.readString(log));
     }
 
     @Test
