@@ -87,11 +87,17 @@ final class ParallelTournament {
     /** Single quotes for the shell. */
     static String quote(String s) { return "'" + s.replace("'", "'\\''") + "'"; }
 
-    /** The command parallel runs per game ({1} tag, {2} game folder, {3} {4} teams, {%} job slot). */
+    /**
+     * The command parallel runs per game ({1} tag, {2} game folder, {3} {4} teams, {%} job slot). It starts
+     * with {@code exec}: on a remote host parallel's wrapper sends SIGTERM to the job and, as soon as the
+     * shell it started exits, SIGKILL (parallel 20221122: the child's exit cuts --termseq's wait short). A
+     * shell between the wrapper and tournament-job would die at once on SIGTERM, and the match would be
+     * killed before it stopped its server and teams. With exec, that shell is tournament-job, which waits.
+     */
     static String template(Plan p) {
         String r = p.remoteRoot();
         String root = r.startsWith("/") ? quote(r) : "~/" + quote(r);
-        StringBuilder sb = new StringBuilder("bash ").append(root).append("/scripts/lib/tools/tournament-job {1} {2} {%} ")
+        StringBuilder sb = new StringBuilder("exec bash ").append(root).append("/scripts/lib/tools/tournament-job {1} {2} {%} ")
                 .append(quote(p.out().toAbsolutePath().toString())).append(p.quiet() ? " 1" : " 0").append(" -- ")
                 .append(p.gameCommand()).append(" --left {3} --right {4}");
         for (String a : p.matchArgs()) sb.append(' ').append(quote(a));
