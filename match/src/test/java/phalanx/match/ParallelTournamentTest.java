@@ -236,6 +236,10 @@ class ParallelTournamentTest {
         }
         Map<String, Long> killed = ledger(ledger, "killed");
         assertFalse(killed.isEmpty(), "no game was running at the kill: " + Files.readString(ledger));
+        // Every game that started either ended or was stopped through its SIGTERM handler: none was cut off.
+        java.util.Set<String> ended = new java.util.TreeSet<>(killed.keySet());
+        ended.addAll(ledger(ledger, "done").keySet());
+        assertEquals(ledger(ledger, "start").keySet(), ended, Files.readString(ledger));
         for (String tag : killed.keySet()) {
             // A stopped game is no result: the tables read only game-NN.json.
             assertFalse(Files.exists(out.resolve(tag + ".json")), tag);
