@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what Phalanx needs to build on Debian/Ubuntu when it is missing: a JDK 17 and Debian's
-# gradle package. Does nothing when both are there. Uses sudo when not run as root.
+# gradle package, and GNU parallel and rsync for `scripts/phalanx tournament --jobs/--hosts` (games as
+# parallel jobs; rsync brings a remote host's results back). Does nothing when all are there. Uses
+# sudo when not run as root.
 set -euo pipefail
 SUDO=""
 [ "$(id -u)" -ne 0 ] && SUDO="sudo"
@@ -10,6 +12,8 @@ if ! command -v javac >/dev/null 2>&1 || ! javac -version 2>&1 | grep -Eq 'javac
   need+=(openjdk-17-jdk-headless)
 fi
 command -v gradle >/dev/null 2>&1 || need+=(gradle)
+{ parallel --version 2>/dev/null | grep -q "GNU parallel"; } || need+=(parallel)  # not moreutils' parallel
+command -v rsync >/dev/null 2>&1 || need+=(rsync)
 
 if [ ${#need[@]} -gt 0 ]; then
   echo "setup: installing ${need[*]}" >&2

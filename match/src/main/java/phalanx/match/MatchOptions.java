@@ -8,7 +8,7 @@ import java.util.Set;
 /** The server and timing options shared by scripts/phalanx match, tournament and keeper-test. */
 final class MatchOptions {
     static final Set<String> VALUED = Set.of("agent-port", "monitor-port", "half-time", "halves", "players",
-            "connect-timeout", "connect-quiet", "settle", "stall", "max-wall");
+            "connect-timeout", "connect-quiet", "settle", "stall", "max-wall", "port-slot");
     static final Set<String> FLAGS = Set.of("sync", "fast", "allow-empty");
     static final String HELP = """
               --sync               agent-sync mode: the server waits for every player's (syn) each cycle
@@ -18,6 +18,8 @@ final class MatchOptions {
               --halves 1|2         (default 2)
               --players N          players per team (default 11)
               --agent-port P       (default: a free P from 3500 on); --monitor-port M (default P+100)
+              --port-slot S        choose P only from 3500+200(S-1) to 3500+200(S-1)+99 (monitor P+100): games
+                                   in different slots never pick the same ports (the tournament's parallel jobs)
               --connect-timeout S  per team, to get its players on the field (default 120)
               --connect-quiet S    a team is complete when no player joined for S seconds (default 15)
               --settle S           between the last player and each kick-off (default 3)
@@ -47,11 +49,23 @@ final class MatchOptions {
     static ServerProcess.Settings server(Args a) {
         boolean fast = a.flag("fast");
         int agent = a.integer("agent-port", 0, 0, 65535);
-        if (agent == 0) agent = ServerProcess.freePortPair(3500);
+        if (agent == 0) agent = freeAgentPort(a, 3500);
         int monitor = a.integer("monitor-port", agent + 100, 1, 65535);
         if (monitor == agent) throw new IllegalArgumentException("--monitor-port must differ from --agent-port");
         return new ServerProcess.Settings(agent, monitor, fast || a.flag("sync"), !fast,
                 a.number("half-time", 300, 1, 3600), a.integer("halves", 2, 1, 2));
+    }
+
+    /** The highest --port-slot: its range ends below 65535. */
+    static final int MAX_PORT_SLOT = 300;
+
+    /** The first agent port of a port slot (1 ...): slot S owns [3500+200(S-1), 3500+200S), agent ports the first 100. */
+    static int slotBase(int slot) { return 3500 + 200 * (slot - 1); }
+
+    /** A free agent port (its monitor port P+100 free too): from {@code from} on, or within --port-slot's range. */
+    static int freeAgentPort(Args a, int from) {
+        int slot = a.integer("port-slot", 0, 1, MAX_PORT_SLOT);
+        return slot == 0 ? ServerProcess.freePortPair(from) : ServerProcess.freePortPair(slotBase(slot), 100);
     }
 
     static MatchConfig config(Args a, TeamCommand first, TeamCommand second, Path dir, Path out) {

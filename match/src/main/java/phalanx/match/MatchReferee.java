@@ -5,7 +5,9 @@ import java.util.Set;
 
 /**
  * scripts/phalanx match: one match between two teams given as start commands, on a server of its own.
- * Exit status 0 when the game reached GameOver, 1 when it did not (the JSON says why), 2 on a usage error.
+ * Exit status 0 when the game reached GameOver, 1 when it did not (the JSON says why), 2 on a usage error,
+ * 3 when no game was played because this machine's server never came up (no server, ports taken, no
+ * monitor port: the JSON says why); a tournament's parallel job retries a 3 on another host.
  */
 public final class MatchReferee {
     static final String USAGE = """
@@ -52,14 +54,14 @@ public final class MatchReferee {
         Thread hook = new Thread(() -> r.abort("interrupted (Ctrl-C or SIGTERM)"), "match-stop");
         Runtime.getRuntime().addShutdownHook(hook);
         MatchResult result = r.run();
-        System.exit(result != null && result.completed() ? 0 : 1);
+        System.exit(result != null && result.completed() ? 0 : r.serverRan() ? 1 : 3);
     }
 
     private static void playMj(Args a, TeamCommand left, TeamCommand right, Path dir, Path out) {
         Path exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir"))).orElseThrow(() ->
                 new IllegalArgumentException("match: no rcssservermj ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh"));
         int agent = a.integer("agent-port", 0, 0, 65535);
-        if (agent == 0) agent = ServerProcess.freePortPair(3700);
+        if (agent == 0) agent = MatchOptions.freeAgentPort(a, 3700);
         MjMatch m = new MjMatch(new MjMatch.Config(exe, left, right, agent, a.integer("monitor-port", agent + 100, 1, 65535),
                 a.number("half-time", MjMatch.Config.RULE_HALF, 1, MjMatch.Config.RULE_HALF), a.integer("halves", 2, 1, 2),
                 a.integer("players", 7, 1, 7), a.number("connect-timeout", 120, 1, 3600), dir, out), System.out);

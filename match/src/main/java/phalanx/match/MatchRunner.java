@@ -44,6 +44,7 @@ public final class MatchRunner {
     private final long startNanos = System.nanoTime();
     private final String started = Instant.now().toString();
     private volatile boolean serverDiedDuringGame;
+    private volatile boolean monitorConnected;
     private volatile String abortReason = "interrupted";
     private volatile long kickOffNanos;
     private volatile long endNanos;
@@ -94,6 +95,12 @@ public final class MatchRunner {
         }
         return result;
     }
+
+    /**
+     * True once this match's server answered on its monitor port. False after {@link #run} means no game
+     * could be played on this machine (no server, ports taken, the server exited at start), not a game result.
+     */
+    public boolean serverRan() { return monitorConnected; }
 
     /** Stops the match from another thread (Ctrl-C): every process is stopped and the result written. */
     public void abort(String why) {
@@ -161,6 +168,7 @@ public final class MatchRunner {
             if (!server.alive()) return "server exited at start (exit " + server.exitCode() + "); see " + server.log();
             try {
                 monitor = MonitorConnection.connect("127.0.0.1", cfg.server().monitorPort(), 1000);
+                monitorConnected = true;
                 Thread reader = new Thread(this::readStream, "monitor-reader");
                 reader.setDaemon(true);
                 reader.start();

@@ -75,11 +75,14 @@ public final class ServerProcess {
     }
 
     /** A free agent port P with P+100 free for the monitor, from {@code from} on. */
-    public static int freePortPair(int from) {
-        for (int p = from; p < from + 400; p++) {
+    public static int freePortPair(int from) { return freePortPair(from, 400); }
+
+    /** A free agent port P in [from, from + span) with P+100 free for the monitor. */
+    public static int freePortPair(int from, int span) {
+        for (int p = from; p < from + span; p++) {
             if (portFree(p) && portFree(p + 100)) return p;
         }
-        throw new IllegalStateException("no free pair of ports (P, P+100) between " + from + " and " + (from + 400));
+        throw new IllegalStateException("no free pair of ports (P, P+100) with P from " + from + " to " + (from + span - 1));
     }
 
     private final Settings settings;

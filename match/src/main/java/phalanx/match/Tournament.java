@@ -21,13 +21,24 @@ import java.util.stream.Stream;
 public final class Tournament {
     static final String USAGE = """
             usage: scripts/phalanx tournament --team NAME='COMMAND' --team NAME='COMMAND' ... [--us NAME] [--games N]
-                                              [--round-robin] [--out DIR] [match options]
+                                              [--round-robin] [--out DIR] [--jobs N] [--hosts FILE] [match options]
                    scripts/phalanx tournament --report DIR [--us NAME]
               COMMAND as for scripts/phalanx match ({host} {port} {dir}). Without --round-robin, --us (default: the
               first --team) plays every other team N times (default 1); the sides alternate.
               --out DIR    results (game-NN.json), match logs, tables.md, goal-difference.svg
                            (default /tmp/phalanx-tournaments/<time>)
               --quiet      only one progress line per game
+            Games as GNU parallel jobs (match/README.md "Tournaments on GNU parallel"):
+              --jobs N         N games at a time on this machine, each in its own port slot (without --hosts),
+                               or N per host of --hosts (default 1)
+              --hosts FILE     parallel's --sshloginfile: one host a line ([N/][user@]host, ':' for this machine);
+                               every host needs the checkout (--remote-dir) and a server
+              --retries N      tries per game, each on another host when there is one (default 3)
+              --ssh CMD        the ssh command for --hosts (default ssh)
+              --remote-dir D   the checkout on the hosts (default: this checkout's path; relative: from the home)
+              --game-command C what a job runs from the checkout with the match options (default scripts/phalanx match)
+              With --jobs or --hosts the same command with the same --out continues an interrupted tournament
+              (DIR/joblog): logged games are not played again.
             """ + MatchOptions.HELP;
 
     /** One scheduled game: {@code first} starts first (left). */
@@ -59,8 +70,7 @@ public final class Tournament {
 
     public static void main(String[] argv) {
         try {
-            Args a = MatchOptions.parse(argv, USAGE, "tournament", Set.of("team", "us", "games", "out", "report"),
-                    Set.of("round-robin", "quiet"));
+            Args a = MatchOptions.parse(argv, USAGE, "tournament", ParallelTournament.OWN_VALUED, ParallelTournament.OWN_FLAGS);
             if (a.get("report", null) != null) {
                 System.exit(report(Path.of(a.get("report", null)), a.get("us", null), System.out));
             }
@@ -75,6 +85,27 @@ public final class Tournament {
             List<Fixture> fixtures = schedule(teams, us, a.integer("games", 1, 1, 1000), a.flag("round-robin"));
             Path out = Path.of(a.get("out", "/tmp/phalanx-tournaments/" + MatchOptions.stamp()));
             Files.createDirectories(out);
+            boolean distributed = a.get("jobs", null) != null || a.get("hosts", null) != null;
+            if (distributed) {
+                // The checkout (scripts/lib/run-java sets phalanx.root): each job runs its game from there.
+                Path root = Path.of(System.getProperty("phalanx.root", System.getProperty("user.dir"))).toAbsolutePath();
+                ParallelTournament.Plan plan = new ParallelTournament.Plan(fixtures, out, root,
+                        a.get("remote-dir", root.toString()), a.get("game-command", "scripts/phalanx match"),
+                        ParallelTournament.matchArgs(argv), a.integer("jobs", 1, 1, MatchOptions.MAX_PORT_SLOT),
+                        a.get("hosts", null) == null ? null : Path.of(a.get("hosts", null)), a.integer("retries", 3, 1, 100),
+                        a.get("ssh", null), a.flag("quiet"));
+                if (plan.hosts() != null && !Files.isRegularFile(plan.hosts())) {
+                    throw new IllegalArgumentException("tournament: --hosts " + plan.hosts() + " is not a file");
+                }
+                MatchOptions.config(a, teams.get(0), teams.get(1), out, out.resolve("x.json")); // checks the options now
+                int missing = ParallelTournament.run(plan, System.out);
+                boolean any;
+                try (Stream<Path> s = Files.list(out)) {
+                    any = s.anyMatch(p -> p.getFileName().toString().matches("game-\\d+\\.json"));
+                }
+                int r = any ? report(out, a.flag("round-robin") ? null : us, System.out) : 0;
+                System.exit(missing > 0 ? 1 : r);
+            }
             MatchOptions.config(a, teams.get(0), teams.get(1), out, out.resolve("x.json")); // checks the options now
             play(fixtures, a, out, a.flag("quiet"));
             System.exit(report(out, a.flag("round-robin") ? null : us, System.out));
@@ -100,7 +131,7 @@ public final class Tournament {
         PrintStream silent = new PrintStream(OutputStream.nullOutputStream());
         for (int i = 0; i < fixtures.size(); i++) {
             Fixture f = fixtures.get(i);
-            String tag = String.format(Locale.ROOT, "game-%02d", i + 1);
+            String tag = tag(i + 1);
             MatchRunner runner;
             synchronized (current) {
                 if (stopping[0]) return;
@@ -115,6 +146,9 @@ public final class Tournament {
             System.out.flush();
         }
     }
+
+    /** The n-th game's name (1 ...): its result is {@code game-NN.json}. */
+    static String tag(int n) { return String.format(Locale.ROOT, "game-%02d", n); }
 
     /** One line per game: score, whether it counts, and each team that was not complete. */
     static String progressLine(int n, int of, MatchResult r) {
