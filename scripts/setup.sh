@@ -12,14 +12,19 @@ if ! command -v javac >/dev/null 2>&1 || ! javac -version 2>&1 | grep -Eq 'javac
   need+=(openjdk-17-jdk-headless)
 fi
 command -v gradle >/dev/null 2>&1 || need+=(gradle)
-{ parallel --version 2>/dev/null | grep -q "GNU parallel"; } || need+=(parallel)  # not moreutils' parallel
-command -v rsync >/dev/null 2>&1 || need+=(rsync)
+# Optional: only tournaments with --jobs/--hosts need them, so a failed install does not stop the set-up.
+optional=()
+{ parallel --version 2>/dev/null | grep -q "GNU parallel"; } || optional+=(parallel)  # not moreutils' parallel
+command -v rsync >/dev/null 2>&1 || optional+=(rsync)
 
-if [ ${#need[@]} -gt 0 ]; then
-  echo "setup: installing ${need[*]}" >&2
+if [ $(( ${#need[@]} + ${#optional[@]} )) -gt 0 ]; then
+  echo "setup: installing ${need[*]} ${optional[*]}" >&2
   export DEBIAN_FRONTEND=noninteractive
-  $SUDO apt-get update -q >/dev/null
-  $SUDO apt-get install -y -q "${need[@]}" >/dev/null
+  $SUDO apt-get update -q >/dev/null || [ ${#need[@]} -eq 0 ]
+  [ ${#need[@]} -eq 0 ] || $SUDO apt-get install -y -q "${need[@]}" >/dev/null
+  if [ ${#optional[@]} -gt 0 ] && ! $SUDO apt-get install -y -q "${optional[@]}" >/dev/null 2>&1; then
+    echo "setup: could not install ${optional[*]}; tournaments with --jobs/--hosts need them (the rest does not)" >&2
+  fi
 fi
 
 # rcssservermj (MuJoCo server, issue 20) into the project's own virtual environment, pinned, from PyPI:
