@@ -129,8 +129,11 @@ public final class T1Gait {
         ry = Math.min(ry, 0.02);
         lyaw = Math.max(lyaw, -0.35);
         ryaw = Math.min(ryaw, 0.35);
-        leftLeg.inverse(c.footX() + lx, c.footY() + ly - sway, c.footZ() + liftL, lyaw, qLeft);
-        rightLeg.inverse(c.footX() + rx, -c.footY() + ry - sway, c.footZ() + liftR, ryaw, qRight);
+        // a foot turned by yaw relative to the torso sits rotated about the torso's vertical axis too, so that
+        // turning pivots about the torso, not about the support ankle
+        double[] pl = rotate(c.footX() + lx, c.footY() + ly, lyaw), pr = rotate(c.footX() + rx, -c.footY() + ry, ryaw);
+        leftLeg.inverse(pl[0], pl[1] - sway, c.footZ() + liftL, lyaw, qLeft);
+        rightLeg.inverse(pr[0], pr[1] - sway, c.footZ() + liftR, ryaw, qRight);
         double[] l = qLeft.clone(), r = qRight.clone();
         // feedback: torso pitching forward (pitch > 0) -> ankles push toes down (ankle pitch more negative?)
         double pe = pitch - Math.toRadians(c.torsoPitchDeg());
@@ -176,6 +179,11 @@ public final class T1Gait {
         out.add(new JointCommand("he2", 0, 0, c.armKp() / 4, c.armKd() / 4, 0));
         out.add(new JointCommand("te1", 0, 0, c.legKp(), c.legKd(), 0));
         return out;
+    }
+
+    private static double[] rotate(double x, double y, double yaw) {
+        double cs = Math.cos(yaw), sn = Math.sin(yaw);
+        return new double[]{cs * x - sn * y, sn * x + cs * y};
     }
 
     private static double approach(double v, double target, double step) {

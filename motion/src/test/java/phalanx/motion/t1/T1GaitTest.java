@@ -12,6 +12,13 @@ import static org.junit.jupiter.api.Assertions.*;
 class T1GaitTest {
     private static final T1GaitConfig C = T1GaitConfig.defaults();
 
+    /** A gait whose torso is at the wanted attitude (so the feedback adds nothing). */
+    private static T1Gait upright() {
+        T1Gait g = new T1Gait(C);
+        g.feedback(0, Math.toRadians(C.torsoPitchDeg()), 0, 0);
+        return g;
+    }
+
     /** Joint ranges in degrees from rcsssmj's robots/T1/robot.xml (radians there), by actuator. */
     private static final Map<String, double[]> RANGE_RAD = new HashMap<>();
 
@@ -70,7 +77,7 @@ class T1GaitTest {
 
     @Test
     void standPlacesTheFeetAtTheConfiguredStance() {
-        Map<String, JointCommand> m = byName(new T1Gait(C).stand());
+        Map<String, JointCommand> m = byName(upright().stand());
         double[] q = new double[6];
         for (int k = 0; k < 6; k++) q[k] = Math.toRadians(m.get("lle" + (k + 1)).qDeg());
         double[] p = new T1LegKinematics(C, true).footPosition(q);
@@ -95,7 +102,7 @@ class T1GaitTest {
 
     @Test
     void atZeroSpeedTheFeetReturnToStance() {
-        T1Gait g = new T1Gait(C);
+        T1Gait g = upright();
         g.stand();
         for (int i = 0; i < 150; i++) g.next(0.6, 0.1, 40);
         double[] moving = g.footOffsets();

@@ -36,11 +36,11 @@ class T1LegKinematicsTest {
             double side = left ? 1 : -1;
             double[] q = {-0.3, 0, 0, 0.6, -0.3, 0};
             for (int i = 0; i < 300; i++) {
-                // the gait's workspace: up to 7 cm ahead / behind, 3 cm sideways, 11 deg of yaw, a 7 cm high band of crouch
+                // the gait's workspace: up to 7 cm ahead / behind, 3 cm sideways of the hip, 6 deg of yaw, a 7 cm high band of crouch
                 double x = C.footX() + 0.14 * (rnd.nextDouble() - 0.5);
-                double y = side * C.footY() + 0.06 * (rnd.nextDouble() - 0.5);
+                double y = side * C.hipY() + 0.06 * (rnd.nextDouble() - 0.5);
                 double z = -0.62 + 0.07 * rnd.nextDouble();
-                double yaw = 0.4 * (rnd.nextDouble() - 0.5);
+                double yaw = 0.2 * (rnd.nextDouble() - 0.5);
                 double err = k.inverse(x, y, z, yaw, q);
                 double[] t = k.forward(q, null, null);
                 double d = Math.sqrt(Math.pow(t[3] - x, 2) + Math.pow(t[7] - y, 2) + Math.pow(t[11] - z, 2));
