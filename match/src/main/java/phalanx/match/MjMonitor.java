@@ -17,7 +17,14 @@ public final class MjMonitor {
         public boolean gameOver() { return "GameOver".equals(playMode); }
     }
 
-    private List<String> modes = List.of();
+    /** rcsssmj 0.2.1's order (games/soccer/play_mode.py), until a ge block names them: the first state can come first. */
+    static final List<String> DEFAULT_MODES = List.of("BeforeKickOff", "KickOff_Left", "KickOff_Right", "PlayOn",
+            "KickIn_Left", "KickIn_Right", "corner_kick_left", "corner_kick_right", "goal_kick_left", "goal_kick_right",
+            "offside_left", "offside_right", "GameOver", "Goal_Left", "Goal_Right", "free_kick_left", "free_kick_right",
+            "direct_free_kick_left", "direct_free_kick_right", "penalty_kick_left", "penalty_kick_right",
+            "penalty_shoot_left", "penalty_shoot_right");
+
+    private List<String> modes = DEFAULT_MODES;
     private String teamLeft, teamRight;
     private State state;
 

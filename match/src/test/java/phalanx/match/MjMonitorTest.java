@@ -38,6 +38,14 @@ class MjMonitorTest {
     }
 
     @Test
+    void theServersOwnModeListMatchesTheBuiltInOneAStateBeforeItIsNamed() throws Exception {
+        String first = Files.readAllLines(RECORDING).get(0);
+        int at = first.indexOf("(play_modes ") + 12;
+        assertEquals(MjMonitor.DEFAULT_MODES, List.of(first.substring(at, first.indexOf(')', at)).split(" ")));
+        assertEquals("PlayOn", new MjMonitor().accept("((gs 1 0)(time 1.0)(half 1)(score_left 0)(score_right 0)(play_mode 3))").playMode());
+    }
+
+    @Test
     void aTruncatedOrForeignMessageKeepsTheLastState() throws Exception {
         List<String> lines = Files.readAllLines(RECORDING);
         MjMonitor m = new MjMonitor();
