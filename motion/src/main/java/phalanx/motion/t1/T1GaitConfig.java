@@ -84,6 +84,19 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                 -2.8147, 0.02);                                              // search (start 0); rcssservermj cycle
     }
 
+    /**
+     * A second preset from a search that scored the 20 s walk at 0.6 m/s and the 20 s turn at 60 deg/s together
+     * (score = speed - 0.1 x falls + 0.6 x turn rate / 60 deg/s - 0.1 x turn falls; 48 rounds from
+     * {@link #defaults()}): it turns on the spot without falling but walks slower (motion/README.md).
+     */
+    public static T1GaitConfig balanced() {
+        return defaults().with("stepTime", 0.3037).with("sway", 0.0267).with("footZ", -0.52).with("footX", 0.03)
+                .with("doubleSupport", 0.0091).with("pitchGain", 1.6287).with("pitchRateGain", 0.0447)
+                .with("rollGain", -0.083).with("rollRateGain", -0.0911).with("stepPitchGain", 0.0)
+                .with("stepRollGain", -0.2858).with("lipmBlend", 0.9634).with("hipRollGain", 0.5538)
+                .with("torsoPitchDeg", -3.0746);
+    }
+
     /** A copy with a named field changed (for the bench's --set name=value). */
     public T1GaitConfig with(String name, double value) {
         java.lang.reflect.RecordComponent[] rc = T1GaitConfig.class.getRecordComponents();
