@@ -98,6 +98,17 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                 .with("maxTurn", 120); // it turns about half the command: 120 commanded gave 57.6 deg/s without a fall
     }
 
+    /**
+     * For turning on the spot only: 26 rounds of the search from {@link #balanced()} scoring the 20 s turn at
+     * 120 deg/s commanded alone (score = turn rate / 60 deg/s - 0.1 x falls). It walks badly (0.6 m/s
+     * commanded: 0.339 m/s with 12 falls in 60 s), so it is not a walking preset.
+     */
+    public static T1GaitConfig turnInPlace() {
+        return balanced().with("stepTime", 0.2825).with("sway", 0.0374).with("footX", 0.0323).with("footY", 0.0923)
+                .with("doubleSupport", 0.0).with("pitchGain", 1.7554).with("pitchRateGain", 0.0442)
+                .with("rollRateGain", -0.1).with("lipmBlend", 0.6968).with("torsoPitchDeg", -5.0);
+    }
+
     /** A copy with a named field changed (for the bench's --set name=value). */
     public T1GaitConfig with(String name, double value) {
         java.lang.reflect.RecordComponent[] rc = T1GaitConfig.class.getRecordComponents();
