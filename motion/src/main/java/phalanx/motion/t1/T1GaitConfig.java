@@ -101,7 +101,7 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
     /**
      * For turning on the spot only: 26 rounds of the search from {@link #balanced()} scoring the 20 s turn at
      * 120 deg/s commanded alone (score = turn rate / 60 deg/s - 0.1 x falls). It walks badly (0.6 m/s
-     * commanded: 0.339 m/s with 12 falls in 60 s), so it is not a walking preset.
+     * commanded: 0.33 m/s with 12-13 falls in 60 s), so it is not a walking preset.
      */
     public static T1GaitConfig turnInPlace() {
         return balanced().with("stepTime", 0.2825).with("sway", 0.0374).with("footX", 0.0323).with("footY", 0.0923)
