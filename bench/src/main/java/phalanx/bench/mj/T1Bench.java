@@ -205,6 +205,12 @@ public final class T1Bench {
                 case "--speed" -> speed = Double.parseDouble(args[++i]);
                 case "--turn" -> turn = Double.parseDouble(args[++i]);
                 case "--port" -> port = Integer.parseInt(args[++i]);
+                case "--preset" -> config = switch (args[++i]) {
+                    case "walk" -> T1GaitConfig.defaults();
+                    case "balanced" -> T1GaitConfig.balanced();
+                    case "turn" -> T1GaitConfig.turnInPlace();
+                    default -> throw new IllegalArgumentException("--preset walk|balanced|turn");
+                };
                 case "--set" -> {
                     String[] kv = args[++i].split("=", 2);
                     config = config.with(kv[0], Double.parseDouble(kv[1]));
@@ -213,9 +219,10 @@ public final class T1Bench {
                 case "-h", "--help" -> {
                     System.out.println("""
                             usage: scripts/phalanx bench t1 [--trial stand|walk|turn|all] [--seconds S] [--speed M_PER_S]
-                                   [--turn DEG_PER_S] [--port P] [--set CONFIG_FIELD=VALUE]... [--verbose]
+                                   [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn] [--set CONFIG_FIELD=VALUE]... [--verbose]
                             Starts its own rcssservermj (ports P, P+1; default 4100) and runs the T1 gait's trials:
-                            stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.""");
+                            stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.
+                            --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.""");
                     return;
                 }
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);

@@ -135,7 +135,8 @@ public final class T1Gait {
         leftLeg.inverse(pl[0], pl[1] - sway, c.footZ() + liftL, lyaw, qLeft);
         rightLeg.inverse(pr[0], pr[1] - sway, c.footZ() + liftR, ryaw, qRight);
         double[] l = qLeft.clone(), r = qRight.clone();
-        // feedback: torso pitching forward (pitch > 0) -> ankles push toes down (ankle pitch more negative?)
+        // feedback: torso pitched forward (pitch > 0, about +y) -> ankle pitch up by pitchGain x error: the foot turns
+        // toes-down against the shank, which pushes the body back; roll likewise at the ankle roll
         double pe = pitch - Math.toRadians(c.torsoPitchDeg());
         double pc = clamp(c.pitchGain() * pe + c.pitchRateGain() * pitchRate, -MAX_CORRECTION, MAX_CORRECTION);
         double rc = clamp(c.rollGain() * roll + c.rollRateGain() * rollRate, -MAX_CORRECTION, MAX_CORRECTION);

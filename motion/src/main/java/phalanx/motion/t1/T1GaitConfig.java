@@ -84,6 +84,31 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                 -2.8147, 0.02);                                              // search (start 0); rcssservermj cycle
     }
 
+    /**
+     * A second preset from a search that scored the 20 s walk at 0.6 m/s and the 20 s turn at 60 deg/s together
+     * (score = speed - 0.1 x falls + 0.6 x turn rate / 60 deg/s - 0.1 x turn falls; 48 rounds from
+     * {@link #defaults()}): it turns on the spot without falling but walks slower (motion/README.md).
+     */
+    public static T1GaitConfig balanced() {
+        return defaults().with("stepTime", 0.3037).with("sway", 0.0267).with("footZ", -0.52).with("footX", 0.03)
+                .with("doubleSupport", 0.0091).with("pitchGain", 1.6287).with("pitchRateGain", 0.0447)
+                .with("rollGain", -0.083).with("rollRateGain", -0.0911).with("stepPitchGain", 0.0)
+                .with("stepRollGain", -0.2858).with("lipmBlend", 0.9634).with("hipRollGain", 0.5538)
+                .with("torsoPitchDeg", -3.0746)
+                .with("maxTurn", 120); // it turns about half the command: 120 commanded gave 57.6 deg/s without a fall
+    }
+
+    /**
+     * For turning on the spot only: 26 rounds of the search from {@link #balanced()} scoring the 20 s turn at
+     * 120 deg/s commanded alone (score = turn rate / 60 deg/s - 0.1 x falls). It walks badly (0.6 m/s
+     * commanded: 0.33 m/s with 12-13 falls in 60 s), so it is not a walking preset.
+     */
+    public static T1GaitConfig turnInPlace() {
+        return balanced().with("stepTime", 0.2825).with("sway", 0.0374).with("footX", 0.0323).with("footY", 0.0923)
+                .with("doubleSupport", 0.0).with("pitchGain", 1.7554).with("pitchRateGain", 0.0442)
+                .with("rollRateGain", -0.1).with("lipmBlend", 0.6968).with("torsoPitchDeg", -5.0);
+    }
+
     /** A copy with a named field changed (for the bench's --set name=value). */
     public T1GaitConfig with(String name, double value) {
         java.lang.reflect.RecordComponent[] rc = T1GaitConfig.class.getRecordComponents();
