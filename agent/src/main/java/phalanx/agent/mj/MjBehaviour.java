@@ -25,8 +25,9 @@ final class MjBehaviour {
     /** Our choices for the T1 (no thesis figure exists): how fast to walk and turn, when a spot is reached. */
     record Config(double maxForward, double maxTurn, double turnFirstDeg, double arriveM, double beamToleranceM,
                   double beamRepeatS) {
-        // motion/README.md "T1 gait": 0.6 m/s straight without a fall in 60 s; turning at 60 °/s fell, so slower
-        static final Config DEFAULT = new Config(0.5, 20, 35, 0.4, 0.1, 1.0);
+        // motion/README.md "T1 gait", the balanced preset: 0.5 m/s walking and 60 °/s commanded (38 °/s turned)
+        // with no fall
+        static final Config DEFAULT = new Config(0.5, 60, 35, 0.4, 0.1, 1.0);
     }
 
     private final StretchedFormation formation;

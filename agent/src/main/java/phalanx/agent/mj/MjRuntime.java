@@ -25,7 +25,8 @@ public final class MjRuntime {
     private final MjPerceptionParser parser = new MjPerceptionParser();
     private final MjWorld world;
     private final MjBehaviour behaviour;
-    private final T1Gait gait = new T1Gait(T1GaitConfig.defaults());
+    /** balanced(): 0.50 m/s and 38 °/s (60 commanded) with no fall, where defaults() walks 0.6 but falls turning (motion/README.md). */
+    private final T1Gait gait = new T1Gait(T1GaitConfig.balanced());
     private final MjActions actions = new MjActions();
     private String last = "(syn)";
     private final int unum;
