@@ -121,7 +121,7 @@ public final class Player {
      * The per-match key start.sh passes in PHALANX_TEAM_KEY. Without one the player still plays, with a
      * key derived from the team name (logged: opponents who guess it could forge our messages).
      */
-    static TeamKey teamKey(String team) {
+    public static TeamKey teamKey(String team) {
         try {
             return TeamKey.fromEnvironment(System.getenv());
         } catch (IllegalArgumentException e) {

@@ -10,9 +10,9 @@ import phalanx.model.field.Vector2;
 
 /**
  * What a T1 player does on rcssservermj, as far as it goes today: beam to its kick-off spot while the referee
- * allows it, then the forward (FC) walks to the ball and every other player to its spot of the thesis formation
- * for the ball's place ({@link StretchedFormation}), facing the ball. No team channel, coordination, kick or
- * get-up yet (issue 20).
+ * allows it, then the field player nearest the ball by the team's reports ({@link MjTeamTalk}) walks to the ball
+ * and every other player to its spot of the thesis formation for the ball's place ({@link StretchedFormation}),
+ * facing the ball. No thesis coordination rounds, kick or get-up yet (issue 20).
  */
 final class MjBehaviour {
     /** A beam (own frame) or a walk command; STAND is neither. */
@@ -49,7 +49,13 @@ final class MjBehaviour {
         return new Pose2(p.x(), p.y(), 0);
     }
 
+    /** As {@link #decide(MjWorld, boolean)} for a player alone: only the forward (FC) goes to the ball. */
     Intent decide(MjWorld w) {
+        return decide(w, role == Role.FC);
+    }
+
+    /** {@code nearest}: no team-mate reports himself nearer the ball ({@link MjTeamTalk#nearestToBall}). */
+    Intent decide(MjWorld w, boolean nearest) {
         Pose2 self = w.self();
         if (self == null || w.side() == 0) return Intent.STAND;
         if (w.beamAllowed()) {
@@ -64,7 +70,7 @@ final class MjBehaviour {
         Vector2 ball = w.ball();
         if (ball == null) return turnInPlace(self, 90);  // look around for it
         boolean kickOffTheirs = w.playMode().startsWith("KickOff") && !w.ours(w.playMode());
-        if (role == Role.FC && !kickOffTheirs) return walkTo(self, ball, ball);
+        if (nearest && role != Role.GK && !kickOffTheirs) return walkTo(self, ball, ball);
         return walkTo(self, formation.generate(ball).position(role), ball);
     }
 

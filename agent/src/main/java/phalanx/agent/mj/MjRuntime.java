@@ -1,9 +1,11 @@
 package phalanx.agent.mj;
 
+import phalanx.agent.Player;
 import phalanx.comm.mj.MjActions;
 import phalanx.comm.mj.MjPerception;
 import phalanx.comm.mj.MjPerceptionParser;
 import phalanx.comm.sexp.MalformedMessageException;
+import phalanx.comm.team.TeamKey;
 import phalanx.model.field.MjField;
 import phalanx.motion.t1.JointCommand;
 import phalanx.model.robot.T1Model;
@@ -30,10 +32,16 @@ public final class MjRuntime {
     private final MjActions actions = new MjActions();
     private String last = "(syn)";
     private final int unum;
+    private final MjTeamTalk talk;
     private long cycles, malformed, beams;
 
     public MjRuntime(String team, int unum, MjField field) {
+        this(team, unum, field, Player.teamKey(team));
+    }
+
+    public MjRuntime(String team, int unum, MjField field, TeamKey key) {
         this.unum = unum;
+        this.talk = new MjTeamTalk(key, unum, field.players());
         this.world = new MjWorld(team);
         this.behaviour = new MjBehaviour(field, unum, MjBehaviour.Config.DEFAULT);
     }
@@ -53,14 +61,18 @@ public final class MjRuntime {
             double[] rp = T1Model.rollPitch(p.quat());
             gait.feedback(rp[0], rp[1], Math.toRadians(p.gyro()[0]), Math.toRadians(p.gyro()[1]));
         }
-        MjBehaviour.Intent intent = behaviour.decide(world);
+        talk.hear(p, world.time());
+        boolean nearest = world.self() != null && world.ball() != null && talk.nearestToBall(world.self(), world.ball(), world.time());
+        MjBehaviour.Intent intent = behaviour.decide(world, nearest);
         // Stand still only while the referee lets robots beam; in play the gait keeps stepping, also on the spot
         // (a walking T1 switched straight to the still pose fell over the ball: seen in MjTeamTest).
         List<JointCommand> joints = world.beamAllowed() || !world.upright() ? gait.stand()
                 : gait.next(intent.vx(), intent.vy(), intent.turnDegPerS());
         for (JointCommand j : joints) actions.joint(j.actuator(), j.qDeg(), j.dqDeg(), j.kp(), j.kd(), j.tau());
         String reply = actions.build();
-        last = reply;
+        last = reply;   // what a malformed message is answered with: never a say again (it would be a replay)
+        byte[] say = talk.say(p, world.self(), world.ball());
+        if (say != null) reply = reply + actions.say(say).build();
         if (intent.beam() != null) {
             beams++;
             int side = world.side();
@@ -77,4 +89,6 @@ public final class MjRuntime {
     public long cycles() { return cycles; }
     public long malformed() { return malformed; }
     public long beams() { return beams; }
+    /** Team-mates' reports heard and accepted so far. */
+    public long heardFromMates() { return talk.accepted(); }
 }

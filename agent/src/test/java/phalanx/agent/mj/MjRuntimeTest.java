@@ -34,7 +34,8 @@ class MjRuntimeTest {
         MjRuntime r = new MjRuntime("Phalanx", 2, MjField.SSIM);
         List<String> lines = Files.readAllLines(RECORDING);
         r.update(lines.get(5));
-        String good = r.update(lines.get(6));
+        // a say is never repeated (it would be a replay): the joint commands only
+        String good = r.update(lines.get(6)).replaceAll("\\(SPK [^)]*\\)", "");
         String line = lines.get(7);
         for (String broken : List.of(line.substring(0, line.length() / 2), "(time (now 1.0)", ")))", "(pos (n torso_pos) (p a b c))", "")) {
             String reply = r.update(broken);

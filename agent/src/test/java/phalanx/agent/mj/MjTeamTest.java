@@ -25,7 +25,8 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 /**
  * The whole team on the real rcssservermj (issue 20's CI test): 7 T1 players connect, parse every message, beam
  * to their kick-off spots (the server's ground-truth torso position within 0.1 m) and stand; after the kick-off the
- * forward walks toward the ball. Needs rcssservermj (scripts/setup.sh installs it into .venv); skips without it.
+ * forward (the nearest to the ball by the team's 10-byte reports) walks toward the ball, and every player has
+ * heard its team-mates. Needs rcssservermj (scripts/setup.sh installs it into .venv); skips without it.
  * Bounded by game time (the server runs in sync mode, as fast as the agents answer).
  */
 class MjTeamTest {
@@ -75,7 +76,10 @@ class MjTeamTest {
             assertNotEquals("BeforeKickOff", mode, "kick-off given");
             double after = closest;
             assertTrue(before - after > 0.5, "the forward walked toward the ball: " + before + " m -> " + after + " m");
-            for (MjRuntime r : team) assertEquals(0, r.malformed(), "player " + r.unum() + " parsed every message");
+            for (MjRuntime r : team) {
+                assertEquals(0, r.malformed(), "player " + r.unum() + " parsed every message");
+                assertTrue(r.heardFromMates() > 0, "player " + r.unum() + " heard its team-mates' reports");
+            }
             System.out.printf("MjTeamTest: 7 players beamed; forward %.2f m from the ball, %.2f m at the closest, in %d cycles%n",
                     before, after, forward.cycles() - start);
         } finally {
