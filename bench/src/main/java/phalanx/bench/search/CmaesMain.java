@@ -33,7 +33,8 @@ public final class CmaesMain {
             "  --sigma S           initial step size in units of each parameter's step (1)",
             "  --timeout S         seconds one evaluation may take (900)",
             "  --best FILE         the best candidate's parameters (every key), as JSON",
-            "  --work DIR          the candidates' files (a temporary folder)");
+            "  --work DIR          the candidates' files (a temporary folder)",
+            "  --parallel          run each generation's candidates through GNU parallel (-j N, local) instead of threads");
 
     private CmaesMain() {}
 
@@ -57,13 +58,13 @@ public final class CmaesMain {
         double sigma = number(o, "sigma", 1.0);
         try {
             Path work = o.containsKey("work") ? Path.of(o.get("work")) : Files.createTempDirectory("cmaes-");
-            CommandEvaluator evaluator = new CommandEvaluator(eval, jobs, timeout, work);
+            CommandEvaluator evaluator = new CommandEvaluator(eval, jobs, timeout, work, o.containsKey("parallel"));
             Map<String, Object> start = new LinkedHashMap<>();
             CmaesSearch.Space space = readSpace(Path.of(spaceFile), start);
             CmaesSearch.Settings settings = new CmaesSearch.Settings(sigma, lambda, seed, generations, maxEvals);
             CmaesSearch search = new CmaesSearch(space, settings, start, o.containsKey("log") ? Path.of(o.get("log")) : null);
             System.out.println("cmaes: " + space.keys().size() + " parameters " + space.keys() + ", lambda " + search.lambda()
-                    + ", seed " + seed + ", " + jobs + " job(s)" + (o.containsKey("log") ? ", log " + o.get("log") : ""));
+                    + ", seed " + seed + ", " + jobs + " job(s)" + (o.containsKey("parallel") ? " through GNU parallel" : "") + (o.containsKey("log") ? ", log " + o.get("log") : ""));
             if (!search.evaluations().isEmpty())
                 System.out.println("cmaes: resuming from " + search.evaluations().size() + " logged evaluations");
             CmaesSearch.Result r;
@@ -101,6 +102,7 @@ public final class CmaesMain {
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--help") || a.equals("-h")) { o.put("help", ""); continue; }
+            if (a.equals("--parallel")) { o.put("parallel", ""); continue; }
             if (!a.startsWith("--") || !FLAGS.contains(a.substring(2)))
                 throw new IllegalArgumentException("unknown argument '" + a + "'\n" + USAGE);
             if (i + 1 >= args.length) throw new IllegalArgumentException(a + " needs a value");

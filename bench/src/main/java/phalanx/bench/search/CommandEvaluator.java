@@ -26,6 +26,12 @@ import java.util.regex.Pattern;
  * {@code SCORE <number> [detail]} (higher is better). A command that exits non-zero, prints no SCORE line or
  * runs over the timeout ends the search with its output's tail; the evaluations finished before it are in
  * the log, so the search resumes from there.
+ *
+ * <p>With {@code viaParallel} the batch is handed to GNU parallel instead of threads ({@code parallel -j N
+ * --joblog ... --timeout S}, as the tournament uses it; {@code {%}} - 1 is the slot): one job per candidate
+ * running a small job script, each job's output in a file beside its candidate. The results are read when
+ * the whole batch is done, so a kill in the middle of a batch loses that batch's finished evaluations (the
+ * thread path logs each as it finishes). Local only here: no --sshloginfile yet.
  */
 public final class CommandEvaluator implements CmaesSearch.Evaluator {
 
@@ -36,8 +42,14 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
     private final int jobs;
     private final long timeoutSeconds;
     private final Path workDir;
+    private final boolean viaParallel;
+    private int batches;
 
     public CommandEvaluator(String command, int jobs, long timeoutSeconds, Path workDir) {
+        this(command, jobs, timeoutSeconds, workDir, false);
+    }
+
+    public CommandEvaluator(String command, int jobs, long timeoutSeconds, Path workDir, boolean viaParallel) {
         if (command == null || command.isBlank()) throw new IllegalArgumentException("--eval needs a command");
         if (!command.contains("{params}")) throw new IllegalArgumentException("--eval command must contain {params} (the candidate's JSON file): " + command);
         if (jobs < 1) throw new IllegalArgumentException("--jobs must be at least 1, got " + jobs);
@@ -46,6 +58,7 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
         this.jobs = jobs;
         this.timeoutSeconds = timeoutSeconds;
         this.workDir = workDir;
+        this.viaParallel = viaParallel;
     }
 
     /** The score line of a command's output: {score, detail}, or null when there is none. */
@@ -61,6 +74,7 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
     @Override
     public void evaluate(List<Map<String, Double>> batch, CmaesSearch.ResultSink done) throws IOException, InterruptedException {
         Files.createDirectories(workDir);
+        if (viaParallel) { evaluateWithParallel(batch, done); return; }
         BlockingQueue<Integer> slots = new ArrayBlockingQueue<>(jobs);
         for (int s = 0; s < jobs; s++) slots.add(s);
         ExecutorService pool = Executors.newFixedThreadPool(Math.min(jobs, batch.size()));
@@ -125,6 +139,55 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
         }
         if (!Double.isFinite(score)) throw new IOException("evaluation printed a SCORE that is not finite (" + s[0] + "): " + cmd);
         done.accept(index, score, s[1]);
+    }
+
+    private void evaluateWithParallel(List<Map<String, Double>> batch, CmaesSearch.ResultSink done) throws IOException, InterruptedException {
+        Path dir = workDir.resolve("batch-" + (++batches));
+        Files.createDirectories(dir);
+        List<String> files = new ArrayList<>();
+        for (int i = 0; i < batch.size(); i++) {
+            Path f = dir.resolve("cand-" + i + ".json");
+            Files.writeString(f, JSON.writeValueAsString(batch.get(i)), StandardCharsets.UTF_8);
+            files.add(f.toAbsolutePath().toString());
+        }
+        Path job = dir.resolve("job.sh");
+        // $1 = the candidate's file, $2 = parallel's job slot (1-based)
+        Files.writeString(job, String.join("\n",
+                "SEARCH_SLOT=$(($2 - 1)); export SEARCH_SLOT",
+                "c=\"$1\"; b=\"${c%.json}\"",
+                "(", command.replace("{params}", "\"$c\""), ") > \"$b.out\" 2> \"$b.err\"",   // own lines: a '#' in it ends at the newline
+                "echo $? > \"$b.rc\"", ""), StandardCharsets.UTF_8);
+        List<String> cmd = new ArrayList<>(List.of("parallel", "-j", Integer.toString(jobs), "--joblog", dir.resolve("joblog").toString(),
+                "--timeout", Long.toString(timeoutSeconds), "--halt", "never", "sh", job.toString(), "{}", "{%}", ":::"));
+        cmd.addAll(files);
+        Process p;
+        try {
+            p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("parallel.out").toFile()).start();
+        } catch (IOException e) {
+            throw new IOException("cannot run GNU parallel (Debian package 'parallel'): " + e.getMessage(), e);
+        }
+        p.waitFor();
+        for (int i = 0; i < files.size(); i++) {
+            String b = files.get(i).substring(0, files.get(i).length() - ".json".length());
+            Path rc = Path.of(b + ".rc");
+            String out = Files.exists(Path.of(b + ".out")) ? Files.readString(Path.of(b + ".out")) : "";
+            String err = Files.exists(Path.of(b + ".err")) ? Files.readString(Path.of(b + ".err")) : "";
+            if (!Files.exists(rc))
+                throw new IOException("GNU parallel job " + (i + 1) + " of batch " + batches + " did not finish (timed out after "
+                        + timeoutSeconds + " s, or parallel failed: " + dir.resolve("parallel.out") + ")\n" + tail(err + out));
+            String[] s = parseScore(out);
+            int status = Integer.parseInt(Files.readString(rc).strip());
+            if (status != 0 || s == null)
+                throw new IOException("evaluation " + (status != 0 ? "exited with status " + status : "printed no 'SCORE <number>' line")
+                        + ": " + command + " on " + files.get(i) + "\n" + tail(err + out));
+            double score;
+            try {
+                score = Double.parseDouble(s[0]);
+            } catch (NumberFormatException e) {
+                throw new IOException("evaluation printed a SCORE that is not a number (" + s[0] + "): " + files.get(i));
+            }
+            done.accept(i, score, s[1]);
+        }
     }
 
     private static String tail(String s) {

@@ -81,6 +81,24 @@ class CmaesCommandTest {
     }
 
     @Test
+    void gnuParallelGivesTheSameSearchAsThreads(@TempDir Path dir) throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(new java.io.File("/usr/bin/parallel").canExecute(), "GNU parallel not installed");
+        Path space = kickSpace(dir), eval = fakeEvaluator(dir);
+        String cmd = "sh '" + eval + "' {params}";
+        CmaesSearch threads = search(space, 9, 4, null);
+        CmaesSearch.Result r1 = threads.run(new CommandEvaluator(cmd, 2, 60, dir.resolve("w1")), null);
+        CmaesSearch par = search(space, 9, 4, null);
+        CmaesSearch.Result r2 = par.run(new CommandEvaluator(cmd, 2, 60, dir.resolve("w2"), true), null);
+        assertEquals(r1.evaluated(), r2.evaluated());
+        assertArrayEquals(r1.best().x(), r2.best().x(), 0.0);
+        assertEquals(r1.best().score(), r2.best().score(), 0.0);
+        assertTrue(par.evaluations().stream().anyMatch(e -> e.detail().equals("slot=1")), "parallel's second slot used");
+        IOException e = assertThrows(IOException.class, () -> search(space, 9, 4, null)
+                .run(new CommandEvaluator("exit 5 # {params}", 2, 60, dir.resolve("w3"), true), null));
+        assertTrue(e.getMessage().contains("exited with status 5"), e.getMessage());
+    }
+
+    @Test
     void theMainWritesTheBestWithEveryParameterAndResumes(@TempDir Path dir) throws Exception {
         Path space = kickSpace(dir), eval = fakeEvaluator(dir), log = dir.resolve("s.jsonl"), best = dir.resolve("best.json");
         String[] args = {"--space", space.toString(), "--eval", "sh '" + eval + "' {params}", "--jobs", "2", "--log", log.toString(),
