@@ -102,7 +102,10 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
                 }
             }
         } finally {
+            // after a failure: the candidates not started are dropped, the running ones stopped (their
+            // processes destroyed) before the search reports the failure
             pool.shutdownNow();
+            pool.awaitTermination(60, TimeUnit.SECONDS);
         }
     }
 
