@@ -54,6 +54,39 @@ class CmaesSearchTest {
         assertEquals(r.evaluated(), s.evaluations().size());
     }
 
+    /**
+     * The batched passes evaluate exactly the points the library's own closed-loop run evaluates, one at a
+     * time with the true values: the batching changes nothing about the search.
+     */
+    @Test
+    void batchingEvaluatesExactlyWhatTheLibrarysOwnRunEvaluates() throws Exception {
+        CmaesSearch.Settings set = new CmaesSearch.Settings(1.0, 0, 13, 30, 100000);
+        CmaesSearch s = new CmaesSearch(sphereSpace(), set, Map.of(), null);
+        s.run(sphere(new AtomicInteger(), -1), null);
+
+        double[] step = {1, 1, 0.5, 2};
+        java.util.List<String> direct = new java.util.ArrayList<>();
+        org.apache.commons.math3.optim.nonlinear.scalar.noderiv.CMAESOptimizer opt =
+                new org.apache.commons.math3.optim.nonlinear.scalar.noderiv.CMAESOptimizer(30, 0.0, true, 0, 0,
+                        new org.apache.commons.math3.random.MersenneTwister(13L), false, null);
+        double[] lo = new double[4], hi = new double[4], sig = new double[4];
+        for (int j = 0; j < 4; j++) { lo[j] = -10 / step[j]; hi[j] = 10 / step[j]; sig[j] = 1.0; }
+        opt.optimize(new org.apache.commons.math3.optim.MaxEval(100000),
+                new org.apache.commons.math3.optim.nonlinear.scalar.ObjectiveFunction(x -> {
+                    direct.add(java.util.Arrays.toString(x));
+                    double v = 0;
+                    for (int j = 0; j < 4; j++) v += Math.pow(x[j] * step[j] - OPT[j], 2);
+                    return -v;
+                }),
+                org.apache.commons.math3.optim.nonlinear.scalar.GoalType.MAXIMIZE,
+                new org.apache.commons.math3.optim.InitialGuess(new double[4]), new org.apache.commons.math3.optim.SimpleBounds(lo, hi),
+                new org.apache.commons.math3.optim.nonlinear.scalar.noderiv.CMAESOptimizer.Sigma(sig),
+                new org.apache.commons.math3.optim.nonlinear.scalar.noderiv.CMAESOptimizer.PopulationSize(s.lambda()));
+        java.util.List<String> batched = s.evaluations().stream().map(e -> java.util.Arrays.toString(e.x())).toList();
+        assertEquals(new java.util.ArrayList<>(new java.util.LinkedHashSet<>(direct)), batched);
+        assertTrue(batched.size() > 100, batched.size() + " evaluations");
+    }
+
     @Test
     void optimumOutsideTheLimitsEndsOnTheBound() throws Exception {
         CmaesSearch.Space box = new CmaesSearch.Space(List.of("a", "b", "c", "d"), new double[] {0, 0, 0, 0}, new double[] {1, 1, 0.5, 2},
