@@ -67,6 +67,9 @@ public final class SessionProcess {
             signal(pid, "KILL");
             killed++;
         }
+        // SIGKILL takes effect asynchronously: on a loaded machine a killed process was still listed (CI, 2026-12-04)
+        long gone = System.nanoTime() + 2_000_000_000L;
+        while (killed > 0 && anyAlive() && System.nanoTime() < gone) sleep(20);
         try {
             process.waitFor(2, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
