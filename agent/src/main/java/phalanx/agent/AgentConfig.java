@@ -84,7 +84,8 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param strongBeyond      the strong kick beyond this distance to the opponent goal (ours)
      * @param oneShotTimeout    a kick or dive that never shows as played ends after this (ours; a missing motion file)
      * @param dribbleWithin     in PlayOn, On Ball dribbles toward the goal instead of kicking while the ball is
-     *                          nearer the opponent goal than this (ours; 0 = always kick, the thesis's Figure 4.14)
+     *                          nearer the opponent goal than this (ours; 0 = always kick, the thesis's Figure 4.14; the player's
+     *                          --dribble-within sets 8 m by default, chosen in games: docs/matches.md session 10)
      */
     /**
      * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params

@@ -23,12 +23,13 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
               --behaviour B  play (default) or still: beam, stand and do nothing else (the "empty"
                              goalkeeper of the thesis's test 6.3)
               --dribble-within M  in PlayOn, dribble toward the goal instead of kicking while the ball is
-                             nearer than M metres to it (default 0: always kick, the thesis; 100: always dribble)
+                             nearer than M metres to it (default 8, from games: docs/matches.md session 10;
+                             0: always kick, the thesis; 100: always dribble)
               --server S     simspark (default: rcssserver3d, a Nao) or mj (rcssservermj, a Booster T1; 7 players,
                              --unum 1-7; docs/rcssservermj.md)""";
 
     public static PlayerOptions defaults() {
-        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false, 0, false);
+        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false, 8, false);
     }
 
     /** Parses flags; throws IllegalArgumentException whose message names the bad flag and value. */

@@ -12,7 +12,8 @@ class PlayerOptionsTest {
         assertEquals("127.0.0.1", d.host());
         assertEquals(3100, d.port());
         assertEquals(11, d.players());
-        assertEquals(0, d.dribbleWithin(), "the thesis: always kick");
+        assertEquals(8, d.dribbleWithin(), "dribble within 8 m of the goal (docs/matches.md, session 10)");
+        assertEquals(0.0, PlayerConfig.of(PlayerOptions.parse("--dribble-within", "0")).agent().kick().dribbleWithin(), "the thesis");
         assertEquals(100.0, PlayerConfig.of(PlayerOptions.parse("--dribble-within", "100")).agent().kick().dribbleWithin());
         PlayerOptions o = PlayerOptions.parse("--host", "localhost", "--port", "3300", "--team", "Kouretes",
                 "--unum", "7", "--players", "9", "--type", "4", "--log-dir", "/tmp/x");
