@@ -5,7 +5,6 @@ import phalanx.comm.team.TeamMessageCodec.Rejection;
 
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.Comparator;
 import java.util.List;
 
 /**
@@ -195,34 +194,7 @@ public final class MjTeamMessageCodec {
      * how many follow. Refuses two actions for one recipient and more than 16 frames.
      */
     public static List<TeamMessage.Actions> pack(Collection<Action> actions) {
-        List<Action> sorted = new ArrayList<>(actions);
-        boolean[] seen = new boolean[16];
-        for (Action a : sorted) {
-            if (a.recipient() < 1 || a.recipient() > 15) throw new IllegalArgumentException("recipient must be 1-15, got " + a.recipient());
-            if (seen[a.recipient()]) throw new IllegalArgumentException("two actions for player " + a.recipient());
-            seen[a.recipient()] = true;
-        }
-        sorted.sort(Comparator.comparingInt((Action a) -> -entryBits(a.id())).thenComparingInt(Action::recipient));
-        List<List<Action>> bins = new ArrayList<>();
-        List<Integer> free = new ArrayList<>();
-        for (Action a : sorted) {
-            int need = entryBits(a.id());
-            int bin = 0;
-            while (bin < bins.size() && free.get(bin) < need) bin++;
-            if (bin == bins.size()) {
-                bins.add(new ArrayList<>());
-                free.add(ACTION_ENTRY_BITS);
-            }
-            bins.get(bin).add(a);
-            free.set(bin, free.get(bin) - need);
-        }
-        if (bins.size() > MAX_ACTION_MESSAGES) {
-            throw new IllegalArgumentException(actions.size() + " actions need " + bins.size() + " frames, at most "
-                    + MAX_ACTION_MESSAGES + " fit in one dispatch");
-        }
-        List<TeamMessage.Actions> messages = new ArrayList<>(bins.size());
-        for (int i = 0; i < bins.size(); i++) messages.add(new TeamMessage.Actions(bins.size() - 1 - i, bins.get(i)));
-        return messages;
+        return ActionPacking.pack(actions, MjTeamMessageCodec::entryBits, ACTION_ENTRY_BITS, MAX_ACTION_MESSAGES, "frames");
     }
 
     private void header(int type, int cycleBits) {

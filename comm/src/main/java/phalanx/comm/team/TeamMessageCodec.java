@@ -4,7 +4,6 @@ import phalanx.comm.effector.EffectorMessage;
 
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.Comparator;
 import java.util.List;
 
 /**
@@ -221,34 +220,7 @@ public final class TeamMessageCodec {
      * telling how many follow. Refuses two actions for one recipient and more than 8 messages.
      */
     public static List<TeamMessage.Actions> pack(Collection<Action> actions) {
-        List<Action> sorted = new ArrayList<>(actions);
-        boolean[] seen = new boolean[16];
-        for (Action a : sorted) {
-            if (a.recipient() < 1 || a.recipient() > 15) throw new IllegalArgumentException("recipient must be 1-15, got " + a.recipient());
-            if (seen[a.recipient()]) throw new IllegalArgumentException("two actions for player " + a.recipient());
-            seen[a.recipient()] = true;
-        }
-        sorted.sort(Comparator.comparingInt((Action a) -> -entryBits(a.id())).thenComparingInt(Action::recipient));
-        List<List<Action>> bins = new ArrayList<>();
-        List<Integer> free = new ArrayList<>();
-        for (Action a : sorted) {
-            int need = entryBits(a.id());
-            int bin = 0;
-            while (bin < bins.size() && free.get(bin) < need) bin++;
-            if (bin == bins.size()) {
-                bins.add(new ArrayList<>());
-                free.add(ACTION_ENTRY_BITS);
-            }
-            bins.get(bin).add(a);
-            free.set(bin, free.get(bin) - need);
-        }
-        if (bins.size() > MAX_ACTION_MESSAGES) {
-            throw new IllegalArgumentException(actions.size() + " actions need " + bins.size() + " messages, at most "
-                    + MAX_ACTION_MESSAGES + " fit in one dispatch");
-        }
-        List<TeamMessage.Actions> messages = new ArrayList<>(bins.size());
-        for (int i = 0; i < bins.size(); i++) messages.add(new TeamMessage.Actions(bins.size() - 1 - i, bins.get(i)));
-        return messages;
+        return ActionPacking.pack(actions, TeamMessageCodec::entryBits, ACTION_ENTRY_BITS, MAX_ACTION_MESSAGES, "messages");
     }
 
     private void header(int type, int cycleBits) {
