@@ -22,6 +22,19 @@ class MjMatchTest {
     private static final String AGENT = Path.of("match/src/test/resources/rcssservermj/syn-agent.py").toAbsolutePath().toString();
 
     @Test
+    void aConfigTheServerCannotPlayIsRefusedWithTheReason() {
+        TeamCommand a = new TeamCommand("Alpha", "x {port}"), b = new TeamCommand("Beta", "y {port}");
+        Path exe = Path.of("/x/rcssservermj"), dir = Path.of("/tmp/x");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new MjMatch.Config(exe, a, b, 3970, 4070, 301, 2, 7, 60, dir, dir.resolve("r.json")));
+        assertTrue(e.getMessage().contains("1-300 s"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> new MjMatch.Config(exe, a, b, 3970, 4070, 60, 3, 7, 60, dir, dir));
+        assertTrue(e.getMessage().contains("halves must be 1 or 2"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> new MjMatch.Config(exe, a, a, 3970, 4070, 60, 2, 7, 60, dir, dir));
+        assertTrue(e.getMessage().contains("both teams are called Alpha"), e.getMessage());
+    }
+
+    @Test
     void playsBothHalvesRecordsTheResultAndStopsEveryProcess(@TempDir Path tmp) throws Exception {
         Optional<Path> exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir")));
         assumeTrue(exe.isPresent(), "rcssservermj not found ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh");
