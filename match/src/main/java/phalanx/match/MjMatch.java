@@ -106,17 +106,14 @@ public final class MjMatch {
         double start = half * Config.RULE_HALF - cfg.halfTime();
         MjServerProcess.Settings s = new MjServerProcess.Settings(cfg.agentPort(), cfg.monitorPort(), true, false, half - 1,
                 start == (half - 1) * Config.RULE_HALF ? Double.NaN : start);
-        // one retry: a start that is not ready (rare; seen once, reason then unknown) costs only seconds
-        for (int attempt = 1; ; attempt++) {
-            server = MjServerProcess.start(cfg.server(), s, dir.resolve(attempt == 1 ? "." : "retry"));
-            say("half %d: rcssservermj pid %d on agent port %d, monitor port %d (agent-sync, no real time)", half,
-                    server.pid(), s.agentPort(), s.monitorPort());
-            if (server.awaitReady(90_000)) break;
-            String why = server.notReadyReason();
-            server.stop();
-            if (attempt == 2 || aborted.get()) return "rcssservermj did not start (" + why + "); see " + server.log();
-            say("half %d: rcssservermj not ready (%s); starting it again", half, why);
+        try {
+            MjServerProcess.startReady(cfg.server(), s, dir, 90_000, started -> server = started,
+                    why -> say("half %d: rcssservermj not ready (%s); starting it again", half, why));
+        } catch (IOException e) {
+            return e.getMessage();
         }
+        say("half %d: rcssservermj pid %d on agent port %d, monitor port %d (agent-sync, no real time)", half,
+                server.pid(), s.agentPort(), s.monitorPort());
         MjMonitor follower = new MjMonitor();
         long[] lastMessage = {System.nanoTime()};
         Writer log = new BufferedWriter(new OutputStreamWriter(new GZIPOutputStream(Files.newOutputStream(dir.resolve("monitor.log.gz"))),

@@ -84,6 +84,41 @@ public final class MjServerProcess {
     }
 
     /**
+     * {@link #start} then {@link #awaitReady}, and once more in {@code dir/retry} when that start was not ready:
+     * rcsssmj 0.2.1 sometimes fails a start (docs/rcssservermj.md), and a second start costs seconds.
+     * {@code onStart} gets each started server at once (so that a Ctrl-C meanwhile can stop it), {@code onRetry}
+     * hears why the first start failed. Throws with both reasons and the log when neither was ready.
+     */
+    public static MjServerProcess startReady(Path executable, Settings s, Path dir, long timeoutMillis,
+                                             java.util.function.Consumer<MjServerProcess> onStart,
+                                             java.util.function.Consumer<String> onRetry) throws IOException, InterruptedException {
+        String first = null;
+        for (int attempt = 1; attempt <= 2; attempt++) {
+            MjServerProcess server = start(executable, s, attempt == 1 ? dir : dir.resolve("retry"));
+            onStart.accept(server);
+            if (server.awaitReady(timeoutMillis)) return server;
+            String why = server.notReadyReason();
+            server.stop();
+            if (attempt == 2) {
+                throw new IOException("rcssservermj did not start, twice (" + first + "; then " + why + "); log "
+                        + server.log() + ": " + tail(server.log()));
+            }
+            first = why;
+            onRetry.accept(why + "; log " + server.log() + ": " + tail(server.log()));
+        }
+        throw new AssertionError("unreachable");
+    }
+
+    private static String tail(Path log) {
+        try {
+            String t = Files.readString(log, java.nio.charset.StandardCharsets.ISO_8859_1);
+            return t.isEmpty() ? "(empty)" : t.substring(Math.max(0, t.length() - 2000));
+        } catch (IOException e) {
+            return "(unreadable: " + e.getMessage() + ")";
+        }
+    }
+
+    /**
      * Waits until the server logs "Starting server... DONE!", then opens this server's one monitor connection and
      * waits until the simulation has stepped (a monitor message with simulation time > 0). Three server quirks
      * (rcsssmj 0.2.1, docs/rcssservermj.md): it listens before its loop runs, and an agent that connects in between
@@ -96,7 +131,7 @@ public final class MjServerProcess {
     public boolean awaitReady(long timeoutMillis) throws IOException, InterruptedException {
         long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
         while (!(Files.exists(log) && Files.readString(log).contains("Starting server... DONE!"))) {
-            if (!alive()) return notReady("it exited before 'Starting server... DONE!'");
+            if (!alive()) return notReady("it exited before 'Starting server... DONE!' (exit " + process.exitCode() + ")");
             if (System.nanoTime() > deadline) return notReady("no 'Starting server... DONE!' within " + timeoutMillis / 1000 + " s");
             Thread.sleep(100);
         }
@@ -110,7 +145,7 @@ public final class MjServerProcess {
         drain.setDaemon(true);
         drain.start();
         while (simTime <= 0) {
-            if (!alive()) return notReady("it exited after 'Starting server... DONE!'");
+            if (!alive()) return notReady("it exited after 'Starting server... DONE!' (exit " + process.exitCode() + ")");
             if (monitorClosed) return notReady("it closed the monitor connection before its first step");
             if (System.nanoTime() > deadline) return notReady("no simulation step within " + timeoutMillis / 1000 + " s");
             Thread.sleep(20);
@@ -166,7 +201,8 @@ public final class MjServerProcess {
     public Settings settings() { return settings; }
     public Path log() { return log; }
     public long pid() { return process.pid(); }
-    public boolean alive() { return process.anyAlive(); }
+    /** The server itself (setsid execs it in place) or anything it started still runs. */
+    public boolean alive() { return process.exitCode() == null || process.anyAlive(); }
 
     /** SIGINT (its handler shuts the simulation down), SIGKILL after 10 s; then the monitor connection closes. */
     public void stop() {

@@ -162,6 +162,10 @@ final class ParallelTournament {
         pb.redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
         pb.environment().put("PHALANX_TOURNAMENT_FAILURES", out.resolve("failures.log").toString());
         if (p.ssh() != null) pb.environment().put("PHALANX_TOURNAMENT_SSH", p.ssh());
+        // parallel's remote worker runs each job with the shell it names here, else with the remote's $SHELL,
+        // and with neither set (a CI job has no SHELL; so had the stand-in ssh of the tests) it runs nothing
+        // and reports success (GNU parallel 20221122; match/README.md)
+        pb.environment().put("PARALLEL_SHELL", "/bin/bash");
         Process proc = pb.start();
         Thread hook = new Thread(() -> {
             if (proc.isAlive()) {

@@ -64,15 +64,35 @@ class MjServerProcessTest {
         assertEquals(-1, MjServerProcess.simulationTime("((RSMP 1 0)"));
     }
 
+    @Test
+    void aServerThatExitsAtOnceIsStartedOnceMoreThenRefusedWithBothReasonsAndItsOutput(@TempDir Path tmp) throws Exception {
+        Path exe = tmp.resolve("dies");
+        Files.writeString(exe, "#!/bin/sh\necho \"Traceback: no MuJoCo here\"\nexit 7\n");
+        Files.setPosixFilePermissions(exe, PosixFilePermissions.fromString("rwxr-xr-x"));
+        List<String> retries = new java.util.ArrayList<>();
+        List<MjServerProcess> started = new java.util.ArrayList<>();
+        int port = ServerProcess.freePortPair(3950);
+        IOException e = assertThrows(IOException.class, () -> MjServerProcess.startReady(exe,
+                new MjServerProcess.Settings(port, port + 100, true, false), tmp.resolve("run"), 20_000, started::add, retries::add));
+        assertEquals(2, started.size(), "started twice");
+        assertEquals(1, retries.size(), retries.toString());
+        assertTrue(retries.get(0).contains("exited before 'Starting server... DONE!' (exit 7)") && retries.get(0).contains("no MuJoCo here"),
+                retries.get(0));
+        assertTrue(e.getMessage().contains("twice") && e.getMessage().contains("(exit 7)") && e.getMessage().contains("no MuJoCo here"),
+                e.getMessage());
+        assertTrue(Files.exists(tmp.resolve("run/retry/server.log")), "the second start has its own folder");
+        for (MjServerProcess p : started) assertFalse(p.alive());
+    }
+
     /** Needs the real rcssservermj (scripts/setup.sh installs it into .venv); skips with a message without it. */
     @Test
     void realServerAcceptsAT1AndSendsItsPerceptionsEachCycle(@TempDir Path tmp) throws Exception {
         Optional<Path> exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir")));
         assumeTrue(exe.isPresent(), "rcssservermj not found ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh");
         int port = ServerProcess.freePortPair(3950);
-        MjServerProcess server = MjServerProcess.start(exe.get(), new MjServerProcess.Settings(port, port + 100, true, false), tmp);
         // importing MuJoCo and compiling the world takes seconds on a first start
-        assertTrue(server.awaitReady(90_000), () -> "rcssservermj not ready: " + read(server.log()));
+        MjServerProcess server = MjServerProcess.startReady(exe.get(), new MjServerProcess.Settings(port, port + 100, true, false), tmp,
+                90_000, started -> { }, why -> System.out.println("rcssservermj started again: " + why));
         try (Socket s = connect(port, server)) {
             s.setSoTimeout(20_000);
             DataOutputStream out = new DataOutputStream(s.getOutputStream());

@@ -37,12 +37,12 @@ class MjTeamTest {
         Optional<Path> exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir")));
         assumeTrue(exe.isPresent(), "rcssservermj not found ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh");
         int port = ServerProcess.freePortPair(3960);
-        MjServerProcess server = MjServerProcess.start(exe.get(), new MjServerProcess.Settings(port, port + 100, true, false), tmp);
+        MjServerProcess server = MjServerProcess.startReady(exe.get(), new MjServerProcess.Settings(port, port + 100, true, false), tmp,
+                90_000, started -> { }, why -> System.out.println("rcssservermj started again: " + why));
         MjField field = MjField.SSIM;
         List<MjRuntime> team = new ArrayList<>();
         ExecutorService pool = Executors.newFixedThreadPool(field.players());
         try {
-            assertTrue(server.awaitReady(90_000), () -> "rcssservermj not ready: " + read(server.log()));
             List<Future<MjPlayer.Outcome>> outcomes = new ArrayList<>();
             for (int n = 1; n <= field.players(); n++) {
                 MjRuntime r = new MjRuntime(TEAM, n, field);
