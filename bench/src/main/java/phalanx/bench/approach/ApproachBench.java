@@ -34,21 +34,22 @@ public final class ApproachBench {
     static final double FIELD_X = 15, FIELD_Y = 10, GOAL_HALF_WIDTH = 1.05;
 
     record Options(int unum, int type, int trials, double minM, double maxM, long seed, String playerOpts, Path dir,
-                   int port, double noTouchS, double afterTouchS, double goalClearance) {}
+                   int port, double noTouchS, double afterTouchS, double goalClearance, double bearingDeg) {}
 
     static final String USAGE = """
             usage: scripts/phalanx bench approach [--trials N] [--type T] [--unum U] [--min M] [--max M] [--seed S]
                                                  [--player-opts "FLAGS"] [--dir DIR] [--port P] [--no-touch S]
-                                                 [--after-touch S] [--goal-clearance M]
+                                                 [--after-touch S] [--goal-clearance M] [--bearing DEG]
               starts its own rcssserver3d (agent port P, default the first free pair from 3700; monitor P+100)
               and one player (scripts/start.sh --only U, type T) and runs N trials (default 30): a still ball
-              M_min..M_max m (default 1..3) from the robot; a trial ends 1 s after the ball stopped, S s (default
+              M_min..M_max m (default 1..3) from the robot, within DEG (default 50) of its heading: in view,
+              as the ball is for the player the coordinator sends to it; a trial ends 1 s after the ball stopped, S s (default
               30) with no touch, or S s (default 12) after the first touch.""";
 
     /** Parses the flags; a bad one throws IllegalArgumentException naming it. */
     static Options parse(String... args) {
         int unum = 9, type = 0, trials = 30, port = 0;
-        double min = 1, max = 3, noTouch = 30, afterTouch = 12, clearance = 9;
+        double min = 1, max = 3, noTouch = 30, afterTouch = 12, clearance = 9, bearing = 50;
         long seed = 1;
         String opts = "";
         Path dir = null;
@@ -69,6 +70,7 @@ public final class ApproachBench {
                     case "--no-touch" -> noTouch = Double.parseDouble(v);
                     case "--after-touch" -> afterTouch = Double.parseDouble(v);
                     case "--goal-clearance" -> clearance = Double.parseDouble(v);
+                    case "--bearing" -> bearing = Double.parseDouble(v);
                     case "--player-opts" -> opts = v;
                     case "--dir" -> dir = Path.of(v);
                     default -> throw new IllegalArgumentException("unknown option " + a);
@@ -85,8 +87,9 @@ public final class ApproachBench {
         if (port != 0 && (port < 1024 || port > 65435)) throw new IllegalArgumentException("--port must be 1024-65435, got " + port);
         if (!(noTouch > 0 && afterTouch > 0)) throw new IllegalArgumentException("--no-touch and --after-touch must be positive");
         if (!(clearance >= 0 && clearance <= 20)) throw new IllegalArgumentException("--goal-clearance must be 0-20 m, got " + clearance);
+        if (!(bearing >= 0 && bearing <= 180)) throw new IllegalArgumentException("--bearing must be 0-180 degrees, got " + bearing);
         if (opts.matches(".*['\"\\\\$`;|&<>].*")) throw new IllegalArgumentException("--player-opts takes plain flags, got '" + opts + "'");
-        return new Options(unum, type, trials, min, max, seed, opts, dir, port, noTouch, afterTouch, clearance);
+        return new Options(unum, type, trials, min, max, seed, opts, dir, port, noTouch, afterTouch, clearance, bearing);
     }
 
     /** One trial: where the ball was put (distance and bearing from the robot), what became of it. */
@@ -185,7 +188,7 @@ public final class ApproachBench {
     private double[] spot(MonitorScene.Pose p) {
         for (int k = 0; k < 200; k++) {
             double d = o.minM() + rnd.nextDouble() * (o.maxM() - o.minM());
-            double b = -180 + 360 * rnd.nextDouble();
+            double b = o.bearingDeg() * (2 * rnd.nextDouble() - 1);
             double h = Math.toRadians(p.yawDeg() + b);
             double x = p.x() + d * Math.cos(h), y = p.y() + d * Math.sin(h);
             if (Math.abs(x) > FIELD_X - 3 || Math.abs(y) > FIELD_Y - 2) continue;

@@ -70,7 +70,7 @@ class ApproachBenchTest {
         assertEquals(9, ApproachBench.parse().unum());
         assertEquals(List.of(2, 20), List.of(ApproachBench.parse("--unum", "2", "--trials", "20").unum(), ApproachBench.parse("--trials", "20").trials()));
         for (String[] bad : new String[][]{{"--unum", "1"}, {"--trials", "x"}, {"--min", "3", "--max", "2"}, {"--max", "6"}, {"--bogus", "1"},
-                {"--player-opts", "--x 1; rm -rf /"}, {"--trials"}}) {
+                {"--player-opts", "--x 1; rm -rf /"}, {"--trials"}, {"--bearing", "200"}}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> ApproachBench.parse(bad), String.join(" ", bad));
             assertTrue(e.getMessage().contains(bad[0]) || e.getMessage().contains("--min"), e.getMessage());
         }
