@@ -31,6 +31,7 @@ public record PlayerConfig(FieldSpec field, NaoModel body, LocalizationConfig lo
         return new PlayerConfig(FieldSpec.forPlayers(o.players()), NaoModel.ofType(o.robotType()),
                 LocalizationConfig.DEFAULT, MotionConfig.DEFAULT, WalkConfig.forType(o.robotType()),
                 ChannelConfig.DEFAULT.withPlayers(o.players()), CoordinationConfig.THESIS,
-                agent.withKick(agent.kick().withDribbleWithin(o.dribbleWithin())));
+                agent.withKick(agent.kick().withDribbleWithin(o.dribbleWithin()))
+                        .withApproach(o.thesisApproach() ? AgentConfig.Approach.THESIS : agent.approach()));
     }
 }

@@ -24,6 +24,8 @@ class PlayerOptionsTest {
         assertEquals("/tmp/x", o.logDir().toString());
         assertFalse(d.mj(), "SimSpark by default");
         assertTrue(PlayerOptions.parse("--server", "mj").mj());
+        assertTrue(PlayerConfig.of(d).agent().approach().enabled(), "the omnidirectional approach by default");
+        assertFalse(PlayerConfig.of(PlayerOptions.parse("--approach", "thesis")).agent().approach().enabled(), "4.6.2's Walk To Ball");
     }
 
     @Test
@@ -36,6 +38,7 @@ class PlayerOptionsTest {
         assertBad("--dribble-within must be 0-100, got 101", "--dribble-within", "101");
         assertBad("--team must be", "--team", "two words");
         assertBad("--server must be simspark or mj, got 'mujoco'", "--server", "mujoco");
+        assertBad("--approach must be omni or thesis, got 'fast'", "--approach", "fast");
         assertBad("unknown flag --speed", "--speed", "3");
         assertBad("--host needs a value", "--host");
         assertBad("unexpected argument 'foo'", "foo");
