@@ -1,0 +1,116 @@
+package phalanx.motion.t1;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Every number of the T1 kick ({@link T1Kick}). Offsets are in the torso frame (x forward, y left, z up, metres)
+ * relative to the gait's stand pose ({@link T1GaitConfig#footX()}, footY, footZ); a kick is written for the right
+ * foot and mirrored for the left. Starting values were set by hand from robot.xml's geometry (foot box half length
+ * 0.1115 m at x +0.01 of the ankle, ball radius 0.11 m, soccer_ball.py); the values marked "bench" were changed
+ * after runs of {@code scripts/phalanx bench t1 --trial kick} on rcssservermj (motion/README.md, "T1 kick").
+ *
+ * @param phases   the keyframes, played in order; each is reached linearly from the one before (the first from
+ *                 the stand pose); the last must be the stand pose (all zero) so the gait can take over
+ * @param legKp    hip and knee stiffness during the kick, N m / rad
+ * @param legKd    hip and knee damping, N m s / rad
+ * @param ankleKp  ankle stiffness, N m / rad
+ * @param ankleKd  ankle damping, N m s / rad
+ * @param ballX    where the ball's centre should be for the kick: ahead of the torso origin, m
+ * @param ballY    ... and sideways from the torso origin towards the kicking foot, m
+ */
+public record T1KickConfig(List<Phase> phases, double legKp, double legKd, double ankleKp, double ankleKd,
+                           double ballX, double ballY) {
+
+    /**
+     * One keyframe.
+     *
+     * @param name        for logs and tests
+     * @param seconds     time to reach this keyframe from the previous one
+     * @param sway        torso shift over the support foot, m (both feet move the other way in the torso frame)
+     * @param kickX       kicking foot forward, m
+     * @param kickY       kicking foot inwards (towards the support foot), m
+     * @param kickZ       kicking foot lift, m
+     * @param kickPitch   kicking ankle pitch added to the IK's level sole, rad (positive: toes down)
+     * @param supportX    support foot forward, m
+     */
+    public record Phase(String name, double seconds, double sway, double kickX, double kickY, double kickZ,
+                        double kickPitch, double supportX) {
+        public Phase {
+            if (!(seconds > 0)) throw new IllegalArgumentException("phase " + name + ": seconds must be > 0");
+        }
+
+        Phase with(String field, double v) {
+            return switch (field) {
+                case "seconds" -> new Phase(name, v, sway, kickX, kickY, kickZ, kickPitch, supportX);
+                case "sway" -> new Phase(name, seconds, v, kickX, kickY, kickZ, kickPitch, supportX);
+                case "kickX" -> new Phase(name, seconds, sway, v, kickY, kickZ, kickPitch, supportX);
+                case "kickY" -> new Phase(name, seconds, sway, kickX, v, kickZ, kickPitch, supportX);
+                case "kickZ" -> new Phase(name, seconds, sway, kickX, kickY, v, kickPitch, supportX);
+                case "kickPitch" -> new Phase(name, seconds, sway, kickX, kickY, kickZ, v, supportX);
+                case "supportX" -> new Phase(name, seconds, sway, kickX, kickY, kickZ, kickPitch, v);
+                default -> throw new IllegalArgumentException("no T1KickConfig.Phase field " + field);
+            };
+        }
+
+        boolean standPose() {
+            return sway == 0 && kickX == 0 && kickY == 0 && kickZ == 0 && kickPitch == 0 && supportX == 0;
+        }
+    }
+
+    public T1KickConfig {
+        phases = List.copyOf(phases);
+        if (phases.isEmpty() || !phases.get(phases.size() - 1).standPose())
+            throw new IllegalArgumentException("a kick must end in the stand pose (last phase all zero)");
+    }
+
+    /** Total duration, s. */
+    public double seconds() {
+        return phases.stream().mapToDouble(Phase::seconds).sum();
+    }
+
+    public static T1KickConfig defaults() {
+        return new T1KickConfig(List.of(
+                //        name       s      sway   kickX  kickY  kickZ  pitch  supX
+                new Phase("shift",   0.60, 0.050, 0.00,  0.00,  0.00,  0.00,  0.00),   // bench (hand 0.075 fell over the support foot)
+                new Phase("lift",    0.25, 0.050, -0.04, 0.00,  0.06,  0.00,  -0.04),  // by hand; supX bench (0: fell backwards)
+                new Phase("draw",    0.15, 0.050, -0.12, 0.00,  0.07,  0.00,  -0.04),  // by hand; supX bench
+                new Phase("swing",   0.16, 0.050, 0.20,  0.00,  0.05,  0.00,  -0.04),  // bench: 0.10 s the foot did not follow
+                new Phase("retract", 0.25, 0.050, 0.02,  0.00,  0.05,  0.00,  -0.04),  // by hand; supX bench
+                new Phase("down",    0.30, 0.040, 0.00,  0.00,  0.00,  0.00,  -0.04),  // by hand; supX bench
+                new Phase("back",    0.50, 0.000, 0.00,  0.00,  0.00,  0.00,  0.00)),  // the stand pose
+                200, 5, 200, 2,                                                          // the gait's gains
+                0.33, 0.04);   // bench: x 0.30 (toe 0.16 m ahead + radius + gap) pushed the ball while standing; y: the torso drifts
+                               // over the support foot, taking the kicking foot inwards (0.087, the foot's y, hit it off centre)
+    }
+
+    /**
+     * A copy with one value changed, for the bench's {@code --kick NAME=VALUE}: {@code legKp} etc., or a phase's
+     * field as {@code PHASE.FIELD}, e.g. {@code swing.kickX}.
+     */
+    public T1KickConfig with(String name, double value) {
+        int dot = name.indexOf('.');
+        if (dot > 0) {
+            String phase = name.substring(0, dot), field = name.substring(dot + 1);
+            List<Phase> out = new ArrayList<>(phases);
+            boolean found = false;
+            for (int i = 0; i < out.size(); i++) {
+                if (out.get(i).name().equals(phase)) {
+                    out.set(i, out.get(i).with(field, value));
+                    found = true;
+                }
+            }
+            if (!found) throw new IllegalArgumentException("no kick phase " + phase);
+            return new T1KickConfig(out, legKp, legKd, ankleKp, ankleKd, ballX, ballY);
+        }
+        return switch (name) {
+            case "legKp" -> new T1KickConfig(phases, value, legKd, ankleKp, ankleKd, ballX, ballY);
+            case "legKd" -> new T1KickConfig(phases, legKp, value, ankleKp, ankleKd, ballX, ballY);
+            case "ankleKp" -> new T1KickConfig(phases, legKp, legKd, value, ankleKd, ballX, ballY);
+            case "ankleKd" -> new T1KickConfig(phases, legKp, legKd, ankleKp, value, ballX, ballY);
+            case "ballX" -> new T1KickConfig(phases, legKp, legKd, ankleKp, ankleKd, value, ballY);
+            case "ballY" -> new T1KickConfig(phases, legKp, legKd, ankleKp, ankleKd, ballX, value);
+            default -> throw new IllegalArgumentException("no T1KickConfig field " + name);
+        };
+    }
+}
