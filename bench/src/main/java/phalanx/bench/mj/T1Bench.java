@@ -266,12 +266,12 @@ public final class T1Bench {
      * the ball (from the monitor's scene graph) until it stops. A fall is a torso tilt over 60 deg from the kick's
      * start until the ball stopped.
      */
-    KickResult kick(T1Gait gait, T1Kick kick, boolean left) throws IOException {
+    KickResult kick(T1Gait gait, T1Kick kick, boolean left, double jx, double jy) throws IOException {
         ball = null;
         if (!reset(gait, -10, 0, 0)) return new KickResult(0, 0, true, "fell while standing before the kick");
         double h = yaw(p.quat());
         double[] tp = p.pos();
-        double kx = kick.config().ballX(), ky = (left ? 1 : -1) * kick.config().ballY();
+        double kx = kick.config().ballX() + jx, ky = (left ? 1 : -1) * kick.config().ballY() + jy;
         double bx = tp[0] + Math.cos(h) * kx - Math.sin(h) * ky, by = tp[1] + Math.sin(h) * kx + Math.cos(h) * ky;
         server.command(String.format(Locale.ROOT, "(ball (pos %.3f %.3f %.3f) (vel 0 0 0))", bx, by, BALL_RADIUS));
         for (int i = 0; i < 25; i++) {
@@ -319,13 +319,15 @@ public final class T1Bench {
         return new KickResult(Math.hypot(dx, dy), err, fell, "");
     }
 
-    void kickTrial(T1Gait gait, T1Kick kick, int n, String foot) throws IOException {
+    /** {@code jitter}: the ball is placed up to this far off the kick's spot in x and y (uniform, seeded: each run the same). */
+    void kickTrial(T1Gait gait, T1Kick kick, int n, String foot, double jitter) throws IOException {
+        java.util.Random rnd = new java.util.Random(20);
         List<Double> dist = new ArrayList<>();
         int falls = 0;
         long wall = System.nanoTime();
         for (int i = 1; i <= n; i++) {
             boolean left = foot.equals("left") || (foot.equals("both") && i % 2 == 0);
-            KickResult r = kick(gait, kick, left);
+            KickResult r = kick(gait, kick, left, jitter * (2 * rnd.nextDouble() - 1), jitter * (2 * rnd.nextDouble() - 1));
             System.out.println(r.line(i, left));
             System.out.flush();
             if (r.note().isEmpty() || r.fell()) dist.add(r.distance());
@@ -351,6 +353,7 @@ public final class T1Bench {
         T1GaitConfig config = T1GaitConfig.defaults();
         T1KickConfig kickConfig = T1KickConfig.defaults();
         int kicks = 10;
+        double jitter = 0;
         String foot = "right";
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
@@ -374,6 +377,7 @@ public final class T1Bench {
                     kickConfig = kickConfig.with(kv[0], Double.parseDouble(kv[1]));
                 }
                 case "--kicks" -> kicks = Integer.parseInt(args[++i]);
+                case "--ball-jitter" -> jitter = Double.parseDouble(args[++i]);
                 case "--foot" -> {
                     foot = args[++i];
                     if (!foot.equals("left") && !foot.equals("right") && !foot.equals("both"))
@@ -384,12 +388,13 @@ public final class T1Bench {
                     System.out.println("""
                             usage: scripts/phalanx bench t1 [--trial stand|walk|turn|kick|all] [--seconds S] [--speed M_PER_S]
                                    [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn] [--set CONFIG_FIELD=VALUE]...
-                                   [--kicks N] [--foot left|right|both] [--kick KICK_FIELD=VALUE]... [--verbose]
+                                   [--kicks N] [--foot left|right|both] [--ball-jitter M] [--kick KICK_FIELD=VALUE]... [--verbose]
                             Starts its own rcssservermj (ports P, P+1; default 4100) and runs the T1 gait's trials:
                             stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.
                             --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.
                             kick (not in all): --kicks N (10) kicks with --foot (right; both alternates), the ball placed in
-                            front of the foot; per kick the ball's travel, its direction error and a fall; --kick changes
+                            front of the foot (up to --ball-jitter M off it in x and y, seeded); per kick the ball's travel,
+                            its direction error and a fall; --kick changes
                             T1KickConfig.defaults(), e.g. --kick swing.kickX=0.25 or --kick legKp=250.""");
                     return;
                 }
@@ -427,7 +432,7 @@ public final class T1Bench {
                     for (String t : trials) {
                         T1Gait gait = new T1Gait(config);
                         if (t.equals("kick")) {
-                            b.kickTrial(gait, new T1Kick(config, kickConfig), kicks, foot);
+                            b.kickTrial(gait, new T1Kick(config, kickConfig), kicks, foot, jitter);
                             continue;
                         }
                         long wall = System.nanoTime();
