@@ -5,6 +5,7 @@ import phalanx.comm.mj.MjPerception;
 import phalanx.coordination.formation.Role;
 import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 import java.util.Map;
@@ -50,6 +51,36 @@ class MjBehaviourTest {
         i = fc.decide(w);
         assertEquals(0, i.vx(), 1e-9, "turns in place first: " + i);
         assertEquals(MjBehaviour.Config.DEFAULT.maxTurn(), Math.abs(i.turnDegPerS()), 1e-9);
+    }
+
+    @Test
+    void closeBehindTheBallAndFacingTheGoalItKicksWithTheFootOnTheBallsSide() {
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjBehaviour.Config c = MjBehaviour.Config.DEFAULT;
+        Vector2 ball = new Vector2(0, 0);   // the goal is at +x, straight ahead
+        assertEquals(MjBehaviour.Foot.RIGHT, fc.kickToGoal(new Pose2(-c.kickBallX(), c.kickBallY(), 0), ball).kick());
+        assertEquals(MjBehaviour.Foot.LEFT, fc.kickToGoal(new Pose2(-c.kickBallX(), -c.kickBallY(), 0), ball).kick());
+        assertEquals(MjBehaviour.Foot.RIGHT, fc.kickToGoal(new Pose2(-c.kickBallX() + 0.03, c.kickBallY() - 0.03, 5), ball).kick(), "within the tolerance");
+        MjBehaviour.Intent offAim = fc.kickToGoal(new Pose2(-c.kickBallX(), c.kickBallY(), 40), ball);
+        assertNull(offAim.kick(), "facing 40 deg off the goal: no kick");
+        assertTrue(offAim.turnDegPerS() < 0, "turns back towards the goal: " + offAim);
+        MjBehaviour.Intent far = fc.kickToGoal(new Pose2(-3, 0.5, 0), ball);
+        assertNull(far.kick());
+        assertTrue(far.vx() > 0, "walks to the spot behind the ball: " + far);
+        MjBehaviour.Intent near = fc.kickToGoal(new Pose2(-c.kickBallX() - 0.3, c.kickBallY(), 0), ball);
+        assertNull(near.kick());
+        assertTrue(near.vx() > 0 && near.vx() <= c.fineSpeed(), "steps up to it slowly: " + near);
+        // off the goal line: the spot lies on the ball-to-goal line, so no kick from straight behind in x
+        Vector2 wide = new Vector2(20, 12);
+        assertNull(fc.kickToGoal(new Pose2(20 - c.kickBallX(), 12 + c.kickBallY(), 0), wide).kick(), "the goal is 41 deg to the right");
+    }
+
+    @Test
+    void inFrontOfTheBallItWalksRoundItNotThroughIt() {
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjBehaviour.Intent i = fc.kickToGoal(new Pose2(0.6, 0, 180), new Vector2(0, 0));   // between the ball and the goal, facing it
+        assertNull(i.kick());
+        assertTrue(Math.abs(i.turnDegPerS()) > 10, "heads off to one side of the ball: " + i);
     }
 
     @Test

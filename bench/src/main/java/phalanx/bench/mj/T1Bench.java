@@ -60,40 +60,12 @@ public final class T1Bench {
         this.verbose = verbose;
         this.server = server;
         server.onMonitorMessage(m -> {
-            double[] b = ballFromMonitor(m);
+            double[] b = phalanx.match.MjMonitor.ball(m);
             if (b != null) {
                 ball = b;
                 ballAt = simTime(m);
             }
         });
-    }
-
-    /**
-     * The ball's position in a monitor message, or null when the message does not move it. The scene graph
-     * ({@code (sg 1 0)full|diff}) starts with the root node, whose first child is the ball's node
-     * ({@code (nd DSC(ball) ...)} in full states), whose first child holds its transform
-     * {@code (nd TRF(SLT m0 .. m15))}, column-major, the translation in m12..m14. A diff leaves out the TRF of a
-     * node that did not change, so the third {@code (nd} after {@code (sg 1 0)} is the ball's transform node in
-     * both (seen in match/src/test/resources/rcssservermj/monitor-kickoff.txt).
-     */
-    static double[] ballFromMonitor(String m) {
-        int at = m.indexOf("(sg 1 0)");
-        if (at < 0) return null;
-        for (int k = 0; k < 3; k++) {
-            at = m.indexOf("(nd", at + 1);
-            if (at < 0) return null;
-        }
-        String trf = " TRF(SLT ";
-        if (!m.startsWith(trf, at + 3)) return null;
-        int start = at + 3 + trf.length(), end = m.indexOf(')', start);
-        if (end < 0) return null;
-        String[] v = m.substring(start, end).trim().split("\\s+");
-        if (v.length != 16) return null;
-        try {
-            return new double[]{Double.parseDouble(v[12]), Double.parseDouble(v[13]), Double.parseDouble(v[14])};
-        } catch (NumberFormatException e) {
-            return null;
-        }
     }
 
     private static double simTime(String m) {

@@ -51,6 +51,9 @@ public final class T1Kick {
     }
 
     public boolean active() { return active; }
+
+    /** Ends a running kick at once (a fall); the next {@link #next} gives the stand pose. */
+    public void stop() { active = false; }
     public boolean leftFoot() { return leftFoot; }
 
     /** The phase being played, or "done". */
