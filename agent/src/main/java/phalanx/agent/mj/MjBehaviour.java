@@ -34,16 +34,18 @@ final class MjBehaviour {
      * Our choices for the T1 (no thesis figure exists): how fast to walk and turn, when a spot is reached; and the
      * kick's approach: where the ball must lie in our frame (kickBallX ahead, ±kickBallY to the kicking foot's side:
      * T1KickConfig's ballX, ballY, where the bench kicked it), how far off that we still kick (kickToleranceM) and
-     * how far off the goal's direction we may face (kickAimDeg); within approachM of the spot we walk to it
+     * how far off the goal's direction we may face (kickAimDeg), where the kick sends the ball against our heading
+     * (kickDirectionDeg, right foot; the left's is its negative: we face that much off the goal); within approachM of the spot we walk to it
      * sideways and forwards (at most fineSpeed) while turning to the goal.
      */
     record Config(double maxForward, double maxTurn, double turnFirstDeg, double arriveM, double beamToleranceM,
-                  double beamRepeatS, double kickBallX, double kickBallY, double kickToleranceM, double kickAimDeg,
+                  double beamRepeatS, double kickBallX, double kickBallY, double kickDirectionDeg, double kickToleranceM, double kickAimDeg,
                   double approachM, double fineSpeed) {
         // motion/README.md "T1 gait", the balanced preset: 0.5 m/s walking and 60 °/s commanded (38 °/s turned)
         // with no fall; the kick's figures: motion/README.md "T1 kick"
         static final Config DEFAULT = new Config(0.5, 60, 35, 0.4, 0.1, 1.0,
-                T1KickConfig.defaults().ballX(), T1KickConfig.defaults().ballY(), 0.05, 20, 0.6, 0.2);
+                T1KickConfig.defaults().ballX(), T1KickConfig.defaults().ballY(), T1KickConfig.defaults().directionDeg(),
+                0.05, 20, 0.6, 0.2);
     }
 
     private final MjField field;
@@ -99,18 +101,20 @@ final class MjBehaviour {
     Intent kickToGoal(Pose2 self, Vector2 ball) {
         Vector2 toGoal = new Vector2(field.halfLength(), 0).minus(ball);
         Vector2 dir = toGoal.norm() < 1e-6 ? new Vector2(1, 0) : toGoal.times(1 / toGoal.norm());
-        Vector2 left = new Vector2(-dir.y(), dir.x());
         Vector2 rel = self.toRelative(ball);
         Foot foot = rel.y() >= 0 ? Foot.LEFT : Foot.RIGHT;
         double side = foot == Foot.LEFT ? 1 : -1;  // the ball lies to this side of our torso when we kick
-        double aim = Angles.difference(dir.angleDeg(), self.thetaDeg());
+        // the heading that sends the ball at the goal, and the torso's spot for it
+        double heading = dir.angleDeg() + side * c.kickDirectionDeg();
+        Vector2 ahead = Vector2.ofAngle(heading), left = new Vector2(-ahead.y(), ahead.x());
+        double aim = Angles.difference(heading, self.thetaDeg());
         if (Math.abs(rel.x() - c.kickBallX()) < c.kickToleranceM() && Math.abs(rel.y() - side * c.kickBallY()) < c.kickToleranceM()
                 && Math.abs(aim) < c.kickAimDeg()) return Intent.kick(foot);
-        Vector2 spot = ball.minus(dir.times(c.kickBallX())).minus(left.times(side * c.kickBallY()));
+        Vector2 spot = ball.minus(ahead.times(c.kickBallX())).minus(left.times(side * c.kickBallY()));
         Vector2 fromBall = self.position().minus(ball);
-        if (fromBall.dot(dir) > -c.kickBallX() / 2 && fromBall.norm() < 1.5) {   // in front of or beside the ball: go round it
+        if (fromBall.dot(ahead) > -c.kickBallX() / 2 && fromBall.norm() < 1.5) {   // in front of or beside the ball: go round it
             double round = fromBall.dot(left) >= 0 ? 1 : -1;
-            return walkTo(self, ball.minus(dir.times(0.8)).plus(left.times(round * 0.6)), ball);
+            return walkTo(self, ball.minus(ahead.times(0.8)).plus(left.times(round * 0.6)), ball);
         }
         if (self.position().distanceTo(spot) > c.approachM()) return walkTo(self, spot, ball);
         Vector2 r = self.toRelative(spot);

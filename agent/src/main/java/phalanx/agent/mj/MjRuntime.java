@@ -34,7 +34,7 @@ public final class MjRuntime {
     private final T1Kick kick = new T1Kick(T1GaitConfig.balanced(), T1KickConfig.defaults());
     /** A kick asked for and waiting for the gait's feet to come together, since (game time), or null. */
     private MjBehaviour.Foot pendingKick;
-    private double pendingSince;
+    private double pendingSince, standUntil = Double.NEGATIVE_INFINITY;
     private long kicks, kicksRefused;
     private final MjActions actions = new MjActions();
     private String last = "(syn)";
@@ -89,6 +89,11 @@ public final class MjRuntime {
 
     /** Longest wait for the gait's feet to come together before a kick, s; then the kick is dropped. */
     static final double KICK_WAIT_S = 1.0;
+    /**
+     * Still after a kick, s: the torso still sways when the kick ends, and walking at once fell 0.9 s after it in
+     * MjKickTest (2026-12-04); the bench stands after its kicks and stood.
+     */
+    static final double STAND_AFTER_KICK_S = 1.0;
 
     /**
      * This cycle's joint commands. Stand still only while the referee lets robots beam (or when fallen); in play the
@@ -105,9 +110,10 @@ public final class MjRuntime {
         }
         if (kick.active()) {
             List<JointCommand> j = kick.next();
-            if (!kick.active()) gait.stand();   // the gait starts afresh from the kick's end pose
+            if (!kick.active()) standUntil = world.time() + STAND_AFTER_KICK_S;
             return j;
         }
+        if (world.time() < standUntil) return gait.stand();   // then the gait starts afresh from the stand pose
         if (intent.kick() != null && pendingKick == null) {
             pendingKick = intent.kick();
             pendingSince = world.time();

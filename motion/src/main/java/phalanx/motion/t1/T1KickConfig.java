@@ -18,9 +18,11 @@ import java.util.List;
  * @param ankleKd  ankle damping, N m s / rad
  * @param ballX    where the ball's centre should be for the kick: ahead of the torso origin, m
  * @param ballY    ... and sideways from the torso origin towards the kicking foot, m
+ * @param directionDeg where the ball goes, against the heading at the kick's start, for the right foot (counter-
+ *                 clockwise positive; the left foot's is its negative): measured with the bench, for aiming
  */
 public record T1KickConfig(List<Phase> phases, double legKp, double legKd, double ankleKp, double ankleKd,
-                           double ballX, double ballY) {
+                           double ballX, double ballY, double directionDeg) {
 
     /**
      * One keyframe.
@@ -80,8 +82,9 @@ public record T1KickConfig(List<Phase> phases, double legKp, double legKd, doubl
                 new Phase("down",    0.30, 0.040, 0.00,  0.00,  0.00,  0.00,  -0.04),  // by hand; supX bench
                 new Phase("back",    0.50, 0.000, 0.00,  0.00,  0.00,  0.00,  0.00)),  // the stand pose
                 200, 5, 200, 2,                                                          // the gait's gains
-                0.33, 0.04);   // bench: x 0.30 (toe 0.16 m ahead + radius + gap) pushed the ball while standing; y: the torso drifts
+                0.33, 0.04,    // bench: x 0.30 (toe 0.16 m ahead + radius + gap) pushed the ball while standing; y: the torso drifts
                                // over the support foot, taking the kicking foot inwards (0.087, the foot's y, hit it off centre)
+                0);
     }
 
     /**
@@ -101,15 +104,16 @@ public record T1KickConfig(List<Phase> phases, double legKp, double legKd, doubl
                 }
             }
             if (!found) throw new IllegalArgumentException("no kick phase " + phase);
-            return new T1KickConfig(out, legKp, legKd, ankleKp, ankleKd, ballX, ballY);
+            return new T1KickConfig(out, legKp, legKd, ankleKp, ankleKd, ballX, ballY, directionDeg);
         }
         return switch (name) {
-            case "legKp" -> new T1KickConfig(phases, value, legKd, ankleKp, ankleKd, ballX, ballY);
-            case "legKd" -> new T1KickConfig(phases, legKp, value, ankleKp, ankleKd, ballX, ballY);
-            case "ankleKp" -> new T1KickConfig(phases, legKp, legKd, value, ankleKd, ballX, ballY);
-            case "ankleKd" -> new T1KickConfig(phases, legKp, legKd, ankleKp, value, ballX, ballY);
-            case "ballX" -> new T1KickConfig(phases, legKp, legKd, ankleKp, ankleKd, value, ballY);
-            case "ballY" -> new T1KickConfig(phases, legKp, legKd, ankleKp, ankleKd, ballX, value);
+            case "legKp" -> new T1KickConfig(phases, value, legKd, ankleKp, ankleKd, ballX, ballY, directionDeg);
+            case "legKd" -> new T1KickConfig(phases, legKp, value, ankleKp, ankleKd, ballX, ballY, directionDeg);
+            case "ankleKp" -> new T1KickConfig(phases, legKp, legKd, value, ankleKd, ballX, ballY, directionDeg);
+            case "ankleKd" -> new T1KickConfig(phases, legKp, legKd, ankleKp, value, ballX, ballY, directionDeg);
+            case "ballX" -> new T1KickConfig(phases, legKp, legKd, ankleKp, ankleKd, value, ballY, directionDeg);
+            case "ballY" -> new T1KickConfig(phases, legKp, legKd, ankleKp, ankleKd, ballX, value, directionDeg);
+            case "directionDeg" -> new T1KickConfig(phases, legKp, legKd, ankleKp, ankleKd, ballX, ballY, value);
             default -> throw new IllegalArgumentException("no T1KickConfig field " + name);
         };
     }

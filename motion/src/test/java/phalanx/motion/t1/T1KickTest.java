@@ -158,7 +158,7 @@ class T1KickTest {
     @Test
     void aConfigMustEndInTheStandPoseAndNamesItsFields() {
         List<T1KickConfig.Phase> noEnd = K.phases().subList(0, K.phases().size() - 1);
-        assertThrows(IllegalArgumentException.class, () -> new T1KickConfig(noEnd, 200, 5, 200, 2, 0.3, 0.05));
+        assertThrows(IllegalArgumentException.class, () -> new T1KickConfig(noEnd, 200, 5, 200, 2, 0.3, 0.05, 0));
         assertThrows(IllegalArgumentException.class, () -> K.with("swing.nothing", 1));
         assertThrows(IllegalArgumentException.class, () -> K.with("nophase.kickX", 1));
         assertThrows(IllegalArgumentException.class, () -> K.with("back.kickX", 0.1), "the last phase must stay the stand pose");
