@@ -34,7 +34,7 @@ public final class MjRuntime {
     private final T1Kick kick = new T1Kick(T1GaitConfig.balanced(), T1KickConfig.defaults());
     /** A kick asked for and waiting for the gait's feet to come together, since (game time), or null. */
     private MjBehaviour.Foot pendingKick;
-    private double pendingSince, standUntil = Double.NEGATIVE_INFINITY;
+    private double pendingSince, settleUntil, standUntil = Double.NEGATIVE_INFINITY;
     private long kicks, kicksRefused;
     private final MjActions actions = new MjActions();
     private String last = "(syn)";
@@ -90,6 +90,11 @@ public final class MjRuntime {
     /** Longest wait for the gait's feet to come together before a kick, s; then the kick is dropped. */
     static final double KICK_WAIT_S = 1.0;
     /**
+     * Still between the feet coming together and the kick, s: the bench kicks after 2.5 s of standing and stood in
+     * 10 of 10; straight from the stepping gait the forward fell during the kick in MjKickTest (2026-12-04).
+     */
+    static final double KICK_SETTLE_S = 0.5;
+    /**
      * Still after a kick, s: the torso still sways when the kick ends, and walking at once fell 0.9 s after it in
      * MjKickTest (2026-12-04); the bench stands after its kicks and stood.
      */
@@ -106,6 +111,7 @@ public final class MjRuntime {
         if (world.beamAllowed() || !world.upright()) {
             kick.stop();
             pendingKick = null;
+            settleUntil = 0;
             return gait.stand();
         }
         if (kick.active()) {
@@ -119,7 +125,9 @@ public final class MjRuntime {
             pendingSince = world.time();
         }
         if (pendingKick == null) return gait.next(intent.vx(), intent.vy(), intent.turnDegPerS());
-        if (feetTogether()) {
+        if (settleUntil > 0) {   // feet together: stand still a moment, then kick
+            if (world.time() < settleUntil) return gait.stand();
+            settleUntil = 0;
             MjBehaviour.Foot foot = pendingKick;
             pendingKick = null;
             var refused = kick.start(foot == MjBehaviour.Foot.LEFT, world.upright());
@@ -129,6 +137,9 @@ public final class MjRuntime {
             }
             kicksRefused++;
             LOG.fine("kick refused: " + refused.get());
+        } else if (feetTogether()) {
+            settleUntil = world.time() + KICK_SETTLE_S;
+            return gait.stand();
         } else if (world.time() - pendingSince > KICK_WAIT_S) {
             pendingKick = null;
         }
