@@ -24,7 +24,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 /**
  * The T1 kick in a game on the real rcssservermj: one forward alone, the kick-off given; it walks to the ball on the
  * centre spot, kicks it, and the ball (its place from the monitor's scene graph) travels at least KICK_FRACTION of
- * the kick bench's median (motion/README.md "T1 kick": the bench kicks from a settled stand, the game's kick comes
+ * the kick bench's median, within 60 deg of the goal's direction, (motion/README.md "T1 kick": the bench kicks from a settled stand, the game's kick comes
  * after an approach, with the ball off the bench's spot by up to MjBehaviour.Config.kickToleranceM). Skips without
  * rcssservermj. Bounded by game time, not wall time.
  */
@@ -59,17 +59,24 @@ class MjKickTest {
                     + ", the ball at " + fc.world().ball() + (fc.kicksRefused() > 0 ? ", kicks refused " + fc.kicksRefused() : ""));
             double[] before = ball.clone();
             long kicked = fc.cycles();
-            double travel = 0;
+            double travel = 0, dx = 0, dy = 0;
             long fell = -1;
             for (int k = 1; k <= 300; k++) {   // the ball's farthest from where it lay at the kick, over 6 game seconds
                 long until = kicked + k;
                 waitFor(() -> fc.cycles() > until, "cycle " + k + " after the kick", player, server);
                 double[] b = ball;
-                travel = Math.max(travel, Math.hypot(b[0] - before[0], b[1] - before[1]));
+                if (Math.hypot(b[0] - before[0], b[1] - before[1]) > travel) {
+                    travel = Math.hypot(b[0] - before[0], b[1] - before[1]);
+                    dx = b[0] - before[0];
+                    dy = b[1] - before[1];
+                }
                 if (fell < 0 && !fc.world().upright()) fell = fc.cycles() - kicked;
             }
-            System.out.printf(Locale.ROOT, "MjKickTest: kicked %d cycles after the kick-off; ball %.2f m (bench median %.1f m); %s%n",
-                    kicked - start, travel, BENCH_MEDIAN_M, fell < 0 ? "stood" : "fell " + fell + " cycles after the kick started");
+            // the left team's opponent goal is at +x, world frame
+            double offGoal = Math.toDegrees(Math.atan2(dy, dx) - Math.atan2(-before[1], MjField.SSIM.halfLength() - before[0]));
+            System.out.printf(Locale.ROOT, "MjKickTest: kicked %d cycles after the kick-off; ball %.2f m (bench median %.1f m), %.1f deg off the goal's direction; %s%n",
+                    kicked - start, travel, BENCH_MEDIAN_M, offGoal, fell < 0 ? "stood" : "fell " + fell + " cycles after the kick started");
+            assertTrue(Math.abs(offGoal) < 60, "kicked towards the opponent goal: " + offGoal + " deg off");
             assertTrue(travel >= KICK_FRACTION * BENCH_MEDIAN_M, "the kick moved the ball " + travel + " m, under "
                     + KICK_FRACTION + " x the bench's median " + BENCH_MEDIAN_M + " m");
         } finally {
