@@ -24,9 +24,9 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 /**
  * The T1 kick in a game on the real rcssservermj: one forward alone, the kick-off given; it walks to the ball on the
  * centre spot, kicks it, and the ball (its place from the monitor's scene graph) travels at least KICK_FRACTION of
- * the kick bench's median, within 60 deg of the goal's direction, (motion/README.md "T1 kick": the bench kicks from a settled stand, the game's kick comes
- * after an approach, with the ball off the bench's spot by up to MjBehaviour.Config.kickToleranceM). Skips without
- * rcssservermj. Bounded by game time, not wall time.
+ * the kick bench's median (motion/README.md "T1 kick": the bench kicks from a settled stand, the game's kick comes
+ * after an approach, with the ball off the bench's spot by up to MjBehaviour.Config.kickToleranceM), within 60 deg
+ * of the goal's direction. Skips without rcssservermj. Bounded by game time, not wall time.
  */
 class MjKickTest {
     /** scripts/phalanx bench t1 --trial kick --kicks 10 --foot both, 2026-12-04 (motion/README.md "T1 kick"). */
