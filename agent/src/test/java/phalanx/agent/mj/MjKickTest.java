@@ -5,10 +5,9 @@ import org.junit.jupiter.api.io.TempDir;
 import phalanx.agent.PlayerOptions;
 import phalanx.match.MjMonitor;
 import phalanx.match.MjServerProcess;
+import phalanx.match.ServerProcess;
 import phalanx.model.field.MjField;
 
-import java.io.IOException;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -87,16 +86,8 @@ class MjKickTest {
 
     /** An agent port P and P + 1 for the monitor, both free, P in [from, to). */
     private static int freePair(int from, int to) {
-        for (int p = from; p < to; p++) if (free(p) && free(p + 1)) return p;
+        for (int p = from; p < to; p++) if (ServerProcess.portFree(p) && ServerProcess.portFree(p + 1)) return p;
         throw new IllegalStateException("no free port pair in " + from + ".." + to);
-    }
-
-    private static boolean free(int p) {
-        try (ServerSocket s = new ServerSocket(p)) {
-            return true;
-        } catch (IOException e) {
-            return false;
-        }
     }
 
     private static void waitFor(BooleanSupplier done, String what, Future<MjPlayer.Outcome> player, MjServerProcess server) throws Exception {
