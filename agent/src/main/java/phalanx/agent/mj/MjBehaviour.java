@@ -35,17 +35,19 @@ final class MjBehaviour {
      * kick's approach: where the ball must lie in our frame (kickBallX ahead, ±kickBallY to the kicking foot's side:
      * T1KickConfig's ballX, ballY, where the bench kicked it), how far off that we still kick (kickToleranceM) and
      * how far off the goal's direction we may face (kickAimDeg), where the kick sends the ball against our heading
-     * (kickDirectionDeg, right foot; the left's is its negative: we face that much off the goal); within approachM of the spot we walk to it
+     * (kickDirectionDeg, right foot; the left's is its negative: we face that much off the goal); the spot we walk to
+     * lies kickBackoffM further back and the kick window's centre half that (the gait creeps forward while it steps
+     * on the spot before the kick, and an approach that touched the ball made the kick a double touch); within approachM of the spot we walk to it
      * sideways and forwards (at most fineSpeed) while turning to the goal.
      */
     record Config(double maxForward, double maxTurn, double turnFirstDeg, double arriveM, double beamToleranceM,
-                  double beamRepeatS, double kickBallX, double kickBallY, double kickDirectionDeg, double kickToleranceM, double kickAimDeg,
-                  double approachM, double fineSpeed) {
+                  double beamRepeatS, double kickBallX, double kickBallY, double kickDirectionDeg, double kickBackoffM,
+                  double kickToleranceM, double kickAimDeg, double approachM, double fineSpeed) {
         // motion/README.md "T1 gait", the balanced preset: 0.5 m/s walking and 60 °/s commanded (38 °/s turned)
         // with no fall; the kick's figures: motion/README.md "T1 kick"
         static final Config DEFAULT = new Config(0.5, 60, 35, 0.4, 0.1, 1.0,
                 T1KickConfig.defaults().ballX(), T1KickConfig.defaults().ballY(), T1KickConfig.defaults().directionDeg(),
-                0.05, 20, 0.6, 0.2);
+                0.0, 0.05, 20, 0.6, 0.2);  // kickBackoffM: 0.06 and 0.03 tried in MjKickTest, worse (motion/README.md "T1 kick")
     }
 
     private final MjField field;
@@ -108,9 +110,9 @@ final class MjBehaviour {
         double heading = dir.angleDeg() + side * c.kickDirectionDeg();
         Vector2 ahead = Vector2.ofAngle(heading), left = new Vector2(-ahead.y(), ahead.x());
         double aim = Angles.difference(heading, self.thetaDeg());
-        if (Math.abs(rel.x() - c.kickBallX()) < c.kickToleranceM() && Math.abs(rel.y() - side * c.kickBallY()) < c.kickToleranceM()
-                && Math.abs(aim) < c.kickAimDeg()) return Intent.kick(foot);
-        Vector2 spot = ball.minus(ahead.times(c.kickBallX())).minus(left.times(side * c.kickBallY()));
+        if (Math.abs(rel.x() - c.kickBallX() - c.kickBackoffM() / 2) < c.kickToleranceM()
+                && Math.abs(rel.y() - side * c.kickBallY()) < c.kickToleranceM() && Math.abs(aim) < c.kickAimDeg()) return Intent.kick(foot);
+        Vector2 spot = ball.minus(ahead.times(c.kickBallX() + c.kickBackoffM())).minus(left.times(side * c.kickBallY()));
         Vector2 fromBall = self.position().minus(ball);
         if (fromBall.dot(ahead) > -c.kickBallX() / 2 && fromBall.norm() < 1.5) {   // in front of or beside the ball: go round it
             double round = fromBall.dot(left) >= 0 ? 1 : -1;

@@ -133,6 +133,8 @@ public final class MjRuntime {
             var refused = kick.start(foot == MjBehaviour.Foot.LEFT, world.upright());
             if (refused.isEmpty()) {
                 kicks++;
+                LOG.info(String.format(java.util.Locale.ROOT, "kick %d (%s foot) at %.2f s from %s, the ball believed at %s", kicks,
+                        foot == MjBehaviour.Foot.LEFT ? "left" : "right", world.time(), world.self(), world.ball()));
                 return kick.next();
             }
             kicksRefused++;

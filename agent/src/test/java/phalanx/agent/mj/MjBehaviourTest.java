@@ -53,10 +53,10 @@ class MjBehaviourTest {
         assertEquals(MjBehaviour.Config.DEFAULT.maxTurn(), Math.abs(i.turnDegPerS()), 1e-9);
     }
 
-    /** Where the torso stands to kick the ball at {@code ball} to the goal (+x) with the foot, by the config. */
+    /** Where the torso stands to kick the ball at {@code ball} to the goal (+x) with the foot: the kick window's centre. */
     private static Pose2 kickPose(MjBehaviour.Config c, Vector2 ball, MjBehaviour.Foot foot) {
         double side = foot == MjBehaviour.Foot.LEFT ? 1 : -1, theta = side * c.kickDirectionDeg();
-        Vector2 p = ball.minus(new Vector2(c.kickBallX(), side * c.kickBallY()).rotate(theta));
+        Vector2 p = ball.minus(new Vector2(c.kickBallX() + c.kickBackoffM() / 2, side * c.kickBallY()).rotate(theta));
         return new Pose2(p.x(), p.y(), theta);
     }
 
@@ -89,7 +89,8 @@ class MjBehaviourTest {
     void itFacesOffTheGoalByTheKicksMeasuredDirection() {
         MjBehaviour.Config d = MjBehaviour.Config.DEFAULT;
         MjBehaviour.Config c = new MjBehaviour.Config(d.maxForward(), d.maxTurn(), d.turnFirstDeg(), d.arriveM(), d.beamToleranceM(),
-                d.beamRepeatS(), d.kickBallX(), d.kickBallY(), -30, d.kickToleranceM(), d.kickAimDeg(), d.approachM(), d.fineSpeed());
+                d.beamRepeatS(), d.kickBallX(), d.kickBallY(), -30, d.kickBackoffM(), d.kickToleranceM(), d.kickAimDeg(), d.approachM(),
+                d.fineSpeed());
         MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, c);
         Vector2 ball = new Vector2(0, 0);
         Pose2 right = kickPose(c, ball, MjBehaviour.Foot.RIGHT);
