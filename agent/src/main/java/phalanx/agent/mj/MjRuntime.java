@@ -90,6 +90,12 @@ public final class MjRuntime {
     /** Longest wait for the gait's feet to come together before a kick, s; then the kick is dropped. */
     static final double KICK_WAIT_S = 1.0;
     /**
+     * Forward command while stepping on the spot before a kick, m/s: the gait creeps forward at 0, and its steps
+     * pushed the ball about 0.15 m before the kick (MjKickTest, 2026-12-04: a missed kick and, in a game, a
+     * double-touch free kick); -0.1 left it in place (at most 5 mm in 3 runs), -0.05 still pushed it 6 cm.
+     */
+    static final double WAIT_VX = -0.1;
+    /**
      * Still between the feet coming together and the kick, s: the bench kicks after 2.5 s of standing and stood in
      * 10 of 10; straight from the stepping gait the forward fell during the kick in MjKickTest (2026-12-04).
      */
@@ -145,7 +151,7 @@ public final class MjRuntime {
         } else if (world.time() - pendingSince > KICK_WAIT_S) {
             pendingKick = null;
         }
-        return gait.next(0, 0, 0);
+        return gait.next(WAIT_VX, 0, 0);
     }
 
     private boolean feetTogether() {
