@@ -110,8 +110,8 @@ public final class MjRuntime {
      * This cycle's joint commands. Stand still only while the referee lets robots beam (or when fallen); in play the
      * gait keeps stepping, also on the spot (a walking T1 switched straight to the still pose fell over the ball:
      * seen in MjTeamTest). A kick plays to its end (or until a fall); it starts from the stand pose, so it waits,
-     * stepping on the spot, for a step's end with the feet back at their stance (the gait's pose is then about the
-     * stand pose), at most KICK_WAIT_S.
+     * stepping on the spot (at WAIT_VX), for a step's end with the feet back at their stance (the gait's pose is
+     * then about the stand pose), at most KICK_WAIT_S, and then stands KICK_SETTLE_S.
      */
     private List<JointCommand> motion(MjBehaviour.Intent intent) {
         if (world.beamAllowed() || !world.upright()) {
