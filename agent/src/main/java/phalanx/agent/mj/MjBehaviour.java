@@ -36,9 +36,9 @@ final class MjBehaviour {
      * T1KickConfig's ballX, ballY, where the bench kicked it), how far off that we still kick (kickToleranceM) and
      * how far off the goal's direction we may face (kickAimDeg), where the kick sends the ball against our heading
      * (kickDirectionDeg, right foot; the left's is its negative: we face that much off the goal); the spot we walk to
-     * lies kickBackoffM further back and the kick window's centre half that (the gait creeps forward while it steps
-     * on the spot before the kick, and an approach that touched the ball made the kick a double touch); within approachM of the spot we walk to it
-     * sideways and forwards (at most fineSpeed) while turning to the goal.
+     * lies kickBackoffM further back and the kick window's centre half that (0: tried against the gait's creep, it
+     * did worse; MjRuntime's WAIT_VX handles the creep); within approachM of the spot we walk to it sideways and
+     * forwards (at most fineSpeed) while turning to the goal.
      */
     record Config(double maxForward, double maxTurn, double turnFirstDeg, double arriveM, double beamToleranceM,
                   double beamRepeatS, double kickBallX, double kickBallY, double kickDirectionDeg, double kickBackoffM,
