@@ -8,7 +8,7 @@ import java.util.List;
  * games/soccer/sim/soccer_state_info.py; match/src/test/resources/rcssservermj/README.md):
  * {@code (gs 1 0)(time T)(half H)(score_left A)(score_right B)(play_mode INDEX)}, the team names in full-state
  * messages only, and the play-mode names, once, in {@code (ge 1 0 ... (play_modes ...))}. Stateful: it keeps the
- * names and the last state across messages. The scene graph is skipped.
+ * names and the last state across messages. Of the scene graph only the ball's place is read ({@link #ball}).
  */
 public final class MjMonitor {
     /** One game state. Team names are null until a full-state message has named them. */
@@ -48,6 +48,34 @@ public final class MjMonitor {
     }
 
     public State state() { return state; }
+
+    /**
+     * The ball's position in a monitor message, or null when the message does not move it. The scene graph
+     * ({@code (sg 1 0)full|diff}, sent every second cycle) starts with the root node, whose first child is the ball's node
+     * ({@code (nd DSC(ball) ...)} in full states), whose first child holds its transform
+     * {@code (nd TRF(SLT m0 .. m15))}, column-major, the translation in m12..m14. A diff leaves out the TRF of a
+     * node that did not change, so the third {@code (nd} after {@code (sg 1 0)} is the ball's transform node in
+     * both (seen in match/src/test/resources/rcssservermj/monitor-kickoff.txt).
+     */
+    public static double[] ball(String m) {
+        int at = m.indexOf("(sg 1 0)");
+        if (at < 0) return null;
+        for (int k = 0; k < 3; k++) {
+            at = m.indexOf("(nd", at + 1);
+            if (at < 0) return null;
+        }
+        String trf = " TRF(SLT ";
+        if (!m.startsWith(trf, at + 3)) return null;
+        int start = at + 3 + trf.length(), end = m.indexOf(')', start);
+        if (end < 0) return null;
+        String[] v = m.substring(start, end).trim().split("\\s+");
+        if (v.length != 16) return null;
+        try {
+            return new double[]{Double.parseDouble(v[12]), Double.parseDouble(v[13]), Double.parseDouble(v[14])};
+        } catch (NumberFormatException e) {
+            return null;
+        }
+    }
 
     /** {@code <LEFT>} and {@code <RIGHT>} stand for a side no team has joined yet. */
     private static String named(String v) {

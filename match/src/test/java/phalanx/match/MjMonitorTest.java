@@ -60,6 +60,24 @@ class MjMonitorTest {
     }
 
     @Test
+    void theBallsPlaceFromFullStatesAndFromTheDiffsThatMoveIt() throws Exception {
+        List<String> lines = Files.readAllLines(RECORDING);
+        double[] first = MjMonitor.ball(lines.get(0));
+        assertArrayEquals(new double[]{0, 0, 0.1097}, first, 1e-9, "the ball dropped on the centre spot");
+        int moved = 0;
+        for (String line : lines.subList(1, lines.size())) {
+            double[] b = MjMonitor.ball(line);
+            if (b == null) continue;   // a diff that leaves the ball where it was
+            moved++;
+            assertEquals(0, Math.hypot(b[0], b[1]), 0.01, "nobody touched it: " + java.util.Arrays.toString(b));
+            assertEquals(0.11, b[2], 0.005, "on the ground (radius 0.11)");
+        }
+        assertTrue(moved > 0, "some message places it again");
+        assertNull(MjMonitor.ball("((RSMP 1 0)((gt 1 0)1.0)((gs 1 0)(time 0)))"), "no scene graph");
+        assertNull(MjMonitor.ball(lines.get(0).substring(0, 200)), "cut inside the ball's transform");
+    }
+
+    @Test
     void rosterFromTheServerLog() {
         List<String[]> r = MjMonitor.rosterLines(List.of("[INFO] Starting server...",
                 "[INFO] Player Alpha #1 joined the game.", "[INFO] Player Beta Two #7 joined the game.",

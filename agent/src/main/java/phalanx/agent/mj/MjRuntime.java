@@ -11,13 +11,15 @@ import phalanx.motion.t1.JointCommand;
 import phalanx.model.robot.T1Model;
 import phalanx.motion.t1.T1Gait;
 import phalanx.motion.t1.T1GaitConfig;
+import phalanx.motion.t1.T1Kick;
+import phalanx.motion.t1.T1KickConfig;
 
 import java.util.List;
 import java.util.logging.Logger;
 
 /**
  * One T1 player's cycle on rcssservermj: sense (parse) → model ({@link MjWorld}) → decide ({@link MjBehaviour})
- * → act (the T1 gait's joint PD commands, a beam when decided). Always answers, also to a message it cannot parse
+ * → act (the T1 gait's joint PD commands, the kick's while it plays, a beam when decided). Always answers, also to a message it cannot parse
  * (the last joint commands again), because an agent-sync server waits for every agent each cycle.
  */
 public final class MjRuntime {
@@ -29,6 +31,11 @@ public final class MjRuntime {
     private final MjBehaviour behaviour;
     /** balanced(): 0.50 m/s and 38 °/s (60 commanded) with no fall, where defaults() walks 0.6 but falls turning (motion/README.md). */
     private final T1Gait gait = new T1Gait(T1GaitConfig.balanced());
+    private final T1Kick kick = new T1Kick(T1GaitConfig.balanced(), T1KickConfig.defaults());
+    /** A kick asked for and waiting for the gait's feet to come together, since (game time), or null. */
+    private MjBehaviour.Foot pendingKick;
+    private double pendingSince, settleUntil, standUntil = Double.NEGATIVE_INFINITY;
+    private long kicks, kicksRefused;
     private final MjActions actions = new MjActions();
     private String last = "(syn)";
     private final int unum;
@@ -64,10 +71,7 @@ public final class MjRuntime {
         talk.hear(p, world.time());
         boolean nearest = world.self() != null && world.ball() != null && talk.nearestToBall(world.self(), world.ball(), world.time());
         MjBehaviour.Intent intent = behaviour.decide(world, nearest);
-        // Stand still only while the referee lets robots beam; in play the gait keeps stepping, also on the spot
-        // (a walking T1 switched straight to the still pose fell over the ball: seen in MjTeamTest).
-        List<JointCommand> joints = world.beamAllowed() || !world.upright() ? gait.stand()
-                : gait.next(intent.vx(), intent.vy(), intent.turnDegPerS());
+        List<JointCommand> joints = motion(intent);
         for (JointCommand j : joints) actions.joint(j.actuator(), j.qDeg(), j.dqDeg(), j.kp(), j.kd(), j.tau());
         String reply = actions.build();
         last = reply;   // what a malformed message is answered with: never a say again (it would be a replay)
@@ -82,6 +86,84 @@ public final class MjRuntime {
         }
         return reply;
     }
+
+    /** Longest wait for the gait's feet to come together before a kick, s; then the kick is dropped. */
+    static final double KICK_WAIT_S = 1.0;
+    /**
+     * Forward command while stepping on the spot before a kick, m/s: the gait creeps forward at 0, and its steps
+     * pushed the ball about 0.15 m before the kick (MjKickTest, 2026-12-04: a missed kick and, in a game, a
+     * double-touch free kick); -0.1 left it in place (at most 5 mm in 3 runs), -0.05 still pushed it 6 cm.
+     */
+    static final double WAIT_VX = -0.1;
+    /**
+     * Still between the feet coming together and the kick, s: the bench kicks after 2.5 s of standing and stood in
+     * 10 of 10; straight from the stepping gait the forward fell during the kick in MjKickTest (2026-12-04).
+     */
+    static final double KICK_SETTLE_S = 0.5;
+    /**
+     * Still after a kick, s: the torso still sways when the kick ends, and walking at once fell 0.9 s after it in
+     * MjKickTest (2026-12-04); the bench stands after its kicks and stood.
+     */
+    static final double STAND_AFTER_KICK_S = 1.0;
+
+    /**
+     * This cycle's joint commands. Stand still only while the referee lets robots beam (or when fallen); in play the
+     * gait keeps stepping, also on the spot (a walking T1 switched straight to the still pose fell over the ball:
+     * seen in MjTeamTest). A kick plays to its end (or until a fall); it starts from the stand pose, so it waits,
+     * stepping on the spot (at WAIT_VX), for a step's end with the feet back at their stance (the gait's pose is
+     * then about the stand pose), at most KICK_WAIT_S, and then stands KICK_SETTLE_S.
+     */
+    private List<JointCommand> motion(MjBehaviour.Intent intent) {
+        if (world.beamAllowed() || !world.upright()) {
+            kick.stop();
+            pendingKick = null;
+            settleUntil = 0;
+            return gait.stand();
+        }
+        if (kick.active()) {
+            List<JointCommand> j = kick.next();
+            if (!kick.active()) standUntil = world.time() + STAND_AFTER_KICK_S;
+            return j;
+        }
+        if (world.time() < standUntil) return gait.stand();   // then the gait starts afresh from the stand pose
+        if (intent.kick() != null && pendingKick == null) {
+            pendingKick = intent.kick();
+            pendingSince = world.time();
+        }
+        if (pendingKick == null) return gait.next(intent.vx(), intent.vy(), intent.turnDegPerS());
+        if (settleUntil > 0) {   // feet together: stand still a moment, then kick
+            if (world.time() < settleUntil) return gait.stand();
+            settleUntil = 0;
+            MjBehaviour.Foot foot = pendingKick;
+            pendingKick = null;
+            var refused = kick.start(foot == MjBehaviour.Foot.LEFT, world.upright());
+            if (refused.isEmpty()) {
+                kicks++;
+                LOG.info(String.format(java.util.Locale.ROOT, "kick %d (%s foot) at %.2f s from %s, the ball believed at %s", kicks,
+                        foot == MjBehaviour.Foot.LEFT ? "left" : "right", world.time(), world.self(), world.ball()));
+                return kick.next();
+            }
+            kicksRefused++;
+            LOG.fine("kick refused: " + refused.get());
+        } else if (feetTogether()) {
+            settleUntil = world.time() + KICK_SETTLE_S;
+            return gait.stand();
+        } else if (world.time() - pendingSince > KICK_WAIT_S) {
+            pendingKick = null;
+        }
+        return gait.next(WAIT_VX, 0, 0);
+    }
+
+    private boolean feetTogether() {
+        double[] lift = gait.lifts(), off = gait.footOffsets();
+        double most = 0;
+        for (int k : new int[]{0, 1, 3, 4}) most = Math.max(most, Math.abs(off[k]));
+        return lift[0] < 1e-3 && lift[1] < 1e-3 && most < 0.02 && Math.abs(off[2]) < 0.05 && Math.abs(off[5]) < 0.05;
+    }
+
+    /** Kicks started and kicks the motion refused, so far. */
+    public long kicks() { return kicks; }
+    public long kicksRefused() { return kicksRefused; }
 
     public int unum() { return unum; }
     public MjWorld world() { return world; }

@@ -5,6 +5,7 @@ import phalanx.comm.mj.MjPerception;
 import phalanx.coordination.formation.Role;
 import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
+import phalanx.model.field.Vector2;
 
 import java.util.List;
 import java.util.Map;
@@ -50,6 +51,62 @@ class MjBehaviourTest {
         i = fc.decide(w);
         assertEquals(0, i.vx(), 1e-9, "turns in place first: " + i);
         assertEquals(MjBehaviour.Config.DEFAULT.maxTurn(), Math.abs(i.turnDegPerS()), 1e-9);
+    }
+
+    /** Where the torso stands to kick the ball at {@code ball} to the goal (+x) with the foot: the kick window's centre. */
+    private static Pose2 kickPose(MjBehaviour.Config c, Vector2 ball, MjBehaviour.Foot foot) {
+        double side = foot == MjBehaviour.Foot.LEFT ? 1 : -1, theta = side * c.kickDirectionDeg();
+        Vector2 p = ball.minus(new Vector2(c.kickBallX() + c.kickBackoffM() / 2, side * c.kickBallY()).rotate(theta));
+        return new Pose2(p.x(), p.y(), theta);
+    }
+
+    @Test
+    void closeBehindTheBallAndFacingTheGoalItKicksWithTheFootOnTheBallsSide() {
+        MjBehaviour.Config c = MjBehaviour.Config.DEFAULT;
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, c);
+        Vector2 ball = new Vector2(0, 0);   // the goal is at +x, straight ahead
+        Pose2 right = kickPose(c, ball, MjBehaviour.Foot.RIGHT), left = kickPose(c, ball, MjBehaviour.Foot.LEFT);
+        assertEquals(MjBehaviour.Foot.RIGHT, fc.kickToGoal(right, ball).kick());
+        assertEquals(MjBehaviour.Foot.LEFT, fc.kickToGoal(left, ball).kick());
+        assertEquals(MjBehaviour.Foot.RIGHT, fc.kickToGoal(new Pose2(right.x() + 0.02, right.y() - 0.02, right.thetaDeg() + 5), ball).kick(),
+                "within the tolerance");
+        MjBehaviour.Intent offAim = fc.kickToGoal(new Pose2(right.x(), right.y(), right.thetaDeg() + 40), ball);
+        assertNull(offAim.kick(), "facing 40 deg off: no kick");
+        assertTrue(offAim.turnDegPerS() < 0, "turns back: " + offAim);
+        MjBehaviour.Intent far = fc.kickToGoal(new Pose2(-3, 0.5, 0), ball);
+        assertNull(far.kick());
+        assertTrue(far.vx() > 0, "walks to the spot behind the ball: " + far);
+        MjBehaviour.Intent near = fc.kickToGoal(new Pose2(right.x() - 0.3, right.y(), right.thetaDeg()), ball);
+        assertNull(near.kick());
+        assertTrue(near.vx() > 0 && near.vx() <= c.fineSpeed(), "steps up to it slowly: " + near);
+        // the spot lies on the ball-to-goal line: the same offsets beside a ball far out on the wing are no kick
+        Vector2 wide = new Vector2(20, 12);
+        assertNull(fc.kickToGoal(new Pose2(wide.x() + right.x(), wide.y() + right.y(), right.thetaDeg()), wide).kick(),
+                "the goal is 41 deg to the right of there");
+    }
+
+    @Test
+    void itFacesOffTheGoalByTheKicksMeasuredDirection() {
+        MjBehaviour.Config d = MjBehaviour.Config.DEFAULT;
+        MjBehaviour.Config c = new MjBehaviour.Config(d.maxForward(), d.maxTurn(), d.turnFirstDeg(), d.arriveM(), d.beamToleranceM(),
+                d.beamRepeatS(), d.kickBallX(), d.kickBallY(), -30, d.kickBackoffM(), d.kickToleranceM(), d.kickAimDeg(), d.approachM(),
+                d.fineSpeed());
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, c);
+        Vector2 ball = new Vector2(0, 0);
+        Pose2 right = kickPose(c, ball, MjBehaviour.Foot.RIGHT);
+        assertEquals(30, right.thetaDeg(), 1e-9, "the right foot sends it 30 deg right: face 30 deg left");
+        assertEquals(MjBehaviour.Foot.RIGHT, fc.kickToGoal(right, ball).kick());
+        assertNull(fc.kickToGoal(new Pose2(right.x(), right.y(), 0), ball).kick(), "facing the goal itself: no kick");
+        assertEquals(-30, kickPose(c, ball, MjBehaviour.Foot.LEFT).thetaDeg(), 1e-9);
+        assertEquals(MjBehaviour.Foot.LEFT, fc.kickToGoal(kickPose(c, ball, MjBehaviour.Foot.LEFT), ball).kick());
+    }
+
+    @Test
+    void inFrontOfTheBallItWalksRoundItNotThroughIt() {
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjBehaviour.Intent i = fc.kickToGoal(new Pose2(0.6, 0, 180), new Vector2(0, 0));   // between the ball and the goal, facing it
+        assertNull(i.kick());
+        assertTrue(Math.abs(i.turnDegPerS()) > 10, "heads off to one side of the ball: " + i);
     }
 
     @Test

@@ -9,6 +9,8 @@ import phalanx.match.MjServerProcess;
 import phalanx.motion.t1.JointCommand;
 import phalanx.motion.t1.T1Gait;
 import phalanx.motion.t1.T1GaitConfig;
+import phalanx.motion.t1.T1Kick;
+import phalanx.motion.t1.T1KickConfig;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -47,10 +49,34 @@ public final class T1Bench {
     private MjPerception p;
     private final boolean verbose;
 
-    private T1Bench(Socket s, boolean verbose) throws IOException {
+    private final MjServerProcess server;
+    /** The ball's world position from the monitor stream (its scene graph), null until the first one. */
+    private volatile double[] ball;
+    private volatile double ballAt = -1;
+
+    private T1Bench(Socket s, boolean verbose, MjServerProcess server) throws IOException {
         this.in = new FrameReader(new BufferedInputStream(s.getInputStream()));
         this.out = new FrameWriter(new BufferedOutputStream(s.getOutputStream()));
         this.verbose = verbose;
+        this.server = server;
+        server.onMonitorMessage(m -> {
+            double[] b = phalanx.match.MjMonitor.ball(m);
+            if (b != null) {
+                ball = b;
+                ballAt = simTime(m);
+            }
+        });
+    }
+
+    private static double simTime(String m) {
+        int at = m.indexOf("(gt 1 0)");
+        if (at < 0) return -1;
+        int end = m.indexOf(')', at + 8);
+        try {
+            return Double.parseDouble(m.substring(at + 8, end).trim());
+        } catch (RuntimeException e) {
+            return -1;
+        }
     }
 
     public record Result(String trial, double seconds, int falls, double commanded, double measured,
@@ -192,12 +218,115 @@ public final class T1Bench {
         return new Result(trial, seconds, falls, turnDegS, Math.toDegrees(yawSum) / time, Math.hypot(along, lateral) / time, 0);
     }
 
+    /** One kick of the kick trial: the ball's travel (m), its direction against the robot's heading (deg), a fall. */
+    record KickResult(double distance, double directionErrorDeg, boolean fell, String note) {
+        String line(int i, boolean left) {
+            return String.format(Locale.ROOT, "kick %2d  %s foot  ball %.2f m  direction error %+.1f deg  %s%s", i, left ? "left " : "right",
+                    distance, directionErrorDeg, fell ? "FELL" : "stood", note.isEmpty() ? "" : "  (" + note + ")");
+        }
+    }
+
+    static final double BALL_RADIUS = 0.11;       // soccer_ball.py
+    static final double BALL_STILL_M = 0.01;      // the ball counts as stopped when it moved less in BALL_WATCH_S
+    static final double BALL_WATCH_S = 0.5;
+    static final double BALL_MAX_S = 12;
+    static final int KICK_TRACE_EVERY = Integer.getInteger("t1.kicktrace", 5);
+
+    /**
+     * The kick trial: beam to (-10, 0) facing +x, stand SETTLE_S, place the ball (monitor {@code (ball (pos x y z)
+     * (vel 0 0 0))}) at the kick config's spot in front of the kicking foot, stand 0.5 s, kick, then stand and watch
+     * the ball (from the monitor's scene graph) until it stops. A fall is a torso tilt over 60 deg from the kick's
+     * start until the ball stopped.
+     */
+    KickResult kick(T1Gait gait, T1Kick kick, boolean left, double jx, double jy) throws IOException {
+        ball = null;
+        if (!reset(gait, -10, 0, 0)) return new KickResult(0, 0, true, "fell while standing before the kick");
+        double h = yaw(p.quat());
+        double[] tp = p.pos();
+        double kx = kick.config().ballX() + jx, ky = (left ? 1 : -1) * kick.config().ballY() + jy;
+        double bx = tp[0] + Math.cos(h) * kx - Math.sin(h) * ky, by = tp[1] + Math.sin(h) * kx + Math.cos(h) * ky;
+        server.command(String.format(Locale.ROOT, "(ball (pos %.3f %.3f %.3f) (vel 0 0 0))", bx, by, BALL_RADIUS));
+        for (int i = 0; i < 25; i++) {
+            feed(gait);
+            cycle(joints(gait.stand()));
+        }
+        double[] b0 = ball;
+        if (b0 == null || Math.hypot(b0[0] - bx, b0[1] - by) > 0.05)
+            return new KickResult(0, 0, false, "the monitor did not show the placed ball: " + java.util.Arrays.toString(b0));
+        Optional<String> refused = kick.start(left, tiltDeg(p.quat()) < FALL_TILT_DEG);
+        if (refused.isPresent()) return new KickResult(0, 0, false, "refused: " + refused.get());
+        boolean fell = false;
+        double t = 0;
+        while (kick.active()) {
+            cycle(joints(kick.next()));
+            t += 0.02;
+            fell |= tiltDeg(p.quat()) > FALL_TILT_DEG;
+            if (verbose && Math.round(t / 0.02) % KICK_TRACE_EVERY == 0) {
+                trace(kick.phaseName(), t);
+                double[] q = new double[6];
+                String pre = left ? "q_llj" : "q_rlj";
+                for (int k = 0; k < 6; k++) q[k] = Math.toRadians(p.joints().get(pre + (k + 1))[0]);
+                double[] f = new phalanx.motion.t1.T1LegKinematics(gait.config(), left).footPosition(q);
+                double[] bl = ball;
+                System.out.printf(Locale.ROOT, "    kicking foot (torso frame, measured) %.3f %.3f %.3f  ball %.3f %.3f %.3f%n", f[0], f[1], f[2], bl[0], bl[1], bl[2]);
+            }
+        }
+        gait.stand();
+        double[] last = ball;
+        for (int i = 1; i <= BALL_MAX_S / 0.02; i++) {
+            feed(gait);
+            cycle(joints(gait.stand()));
+            fell |= tiltDeg(p.quat()) > FALL_TILT_DEG;
+            if (i % Math.round(BALL_WATCH_S / 0.02) == 0) {
+                double[] b = ball;
+                if (Math.hypot(b[0] - last[0], b[1] - last[1]) < BALL_STILL_M) break;
+                last = b;
+            }
+        }
+        double[] b1 = ball;
+        double dx = b1[0] - b0[0], dy = b1[1] - b0[1];
+        double err = Math.toDegrees(Math.atan2(dy, dx) - h);
+        while (err > 180) err -= 360;
+        while (err < -180) err += 360;
+        return new KickResult(Math.hypot(dx, dy), err, fell, "");
+    }
+
+    /** {@code jitter}: the ball is placed up to this far off the kick's spot in x and y (uniform, seeded: each run the same). */
+    void kickTrial(T1Gait gait, T1Kick kick, int n, String foot, double jitter) throws IOException {
+        java.util.Random rnd = new java.util.Random(20);
+        List<Double> dist = new ArrayList<>();
+        int falls = 0;
+        long wall = System.nanoTime();
+        for (int i = 1; i <= n; i++) {
+            boolean left = foot.equals("left") || (foot.equals("both") && i % 2 == 0);
+            KickResult r = kick(gait, kick, left, jitter * (2 * rnd.nextDouble() - 1), jitter * (2 * rnd.nextDouble() - 1));
+            System.out.println(r.line(i, left));
+            System.out.flush();
+            if (r.note().isEmpty() || r.fell()) dist.add(r.distance());
+            if (r.fell()) falls++;
+        }
+        System.out.printf(Locale.ROOT, "kick summary: %d kicks (%s foot)  ball median %.2f m  min %.2f  max %.2f  falls %d   (%.0f s wall)%n",
+                n, foot, median(dist), dist.stream().mapToDouble(d -> d).min().orElse(Double.NaN),
+                dist.stream().mapToDouble(d -> d).max().orElse(Double.NaN), falls, (System.nanoTime() - wall) / 1e9);
+    }
+
+    static double median(List<Double> v) {
+        List<Double> s = new ArrayList<>(v);
+        java.util.Collections.sort(s);
+        int n = s.size();
+        return n == 0 ? Double.NaN : n % 2 == 1 ? s.get(n / 2) : (s.get(n / 2 - 1) + s.get(n / 2)) / 2;
+    }
+
     public static void main(String[] args) throws Exception {
         String trial = "all";
         double seconds = -1, speed = 0.6, turn = 60;
         int port = 4100;
         boolean verbose = false;
         T1GaitConfig config = T1GaitConfig.defaults();
+        T1KickConfig kickConfig = T1KickConfig.defaults();
+        int kicks = 10;
+        double jitter = 0;
+        String foot = "right";
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--trial" -> trial = args[++i];
@@ -215,14 +344,30 @@ public final class T1Bench {
                     String[] kv = args[++i].split("=", 2);
                     config = config.with(kv[0], Double.parseDouble(kv[1]));
                 }
+                case "--kick" -> {
+                    String[] kv = args[++i].split("=", 2);
+                    kickConfig = kickConfig.with(kv[0], Double.parseDouble(kv[1]));
+                }
+                case "--kicks" -> kicks = Integer.parseInt(args[++i]);
+                case "--ball-jitter" -> jitter = Double.parseDouble(args[++i]);
+                case "--foot" -> {
+                    foot = args[++i];
+                    if (!foot.equals("left") && !foot.equals("right") && !foot.equals("both"))
+                        throw new IllegalArgumentException("--foot left|right|both");
+                }
                 case "--verbose" -> verbose = true;
                 case "-h", "--help" -> {
                     System.out.println("""
-                            usage: scripts/phalanx bench t1 [--trial stand|walk|turn|all] [--seconds S] [--speed M_PER_S]
-                                   [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn] [--set CONFIG_FIELD=VALUE]... [--verbose]
+                            usage: scripts/phalanx bench t1 [--trial stand|walk|turn|kick|all] [--seconds S] [--speed M_PER_S]
+                                   [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn] [--set CONFIG_FIELD=VALUE]...
+                                   [--kicks N] [--foot left|right|both] [--ball-jitter M] [--kick KICK_FIELD=VALUE]... [--verbose]
                             Starts its own rcssservermj (ports P, P+1; default 4100) and runs the T1 gait's trials:
                             stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.
-                            --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.""");
+                            --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.
+                            kick (not in all): --kicks N (10) kicks with --foot (right; both alternates), the ball placed in
+                            front of the foot (up to --ball-jitter M off it in x and y, seeded); per kick the ball's travel,
+                            its direction error and a fall; --kick changes
+                            T1KickConfig.defaults(), e.g. --kick swing.kickX=0.25 or --kick legKp=250.""");
                     return;
                 }
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
@@ -245,7 +390,7 @@ public final class T1Bench {
                 try (Socket s = new Socket("127.0.0.1", port)) {
                     s.setTcpNoDelay(true);
                     s.setSoTimeout(30_000);
-                    T1Bench b = new T1Bench(s, verbose);
+                    T1Bench b = new T1Bench(s, verbose, server);
                     try {
                         b.out.write(MjActions.init("Phalanx", 2));
                         b.cycle("(syn)");
@@ -258,6 +403,10 @@ public final class T1Bench {
                     }
                     for (String t : trials) {
                         T1Gait gait = new T1Gait(config);
+                        if (t.equals("kick")) {
+                            b.kickTrial(gait, new T1Kick(config, kickConfig), kicks, foot, jitter);
+                            continue;
+                        }
                         long wall = System.nanoTime();
                         Result r = switch (t) {
                             case "stand" -> b.stand(gait, seconds > 0 ? seconds : 30);
