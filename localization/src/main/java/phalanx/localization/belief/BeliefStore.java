@@ -107,24 +107,18 @@ public final class BeliefStore {
         selfFilter.reset();
         ballFilter.clear();
         ballTracker.clear();
-        ballRelative = null;
-        ballTime = Double.NEGATIVE_INFINITY;
         selfTime = Double.NEGATIVE_INFINITY;
     }
 
     /**
-     * The self belief was re-initialised: the filtered ball and its track, placed with the old pose, are
-     * dropped, and the next sighting is accepted wherever it is. The last sighting is relative to the body
-     * and stays until then (the belief then places it with the new pose, see {@link #snapshot}): most
-     * re-initialisations in play correct a pose that drifted while the head looked down at the ball at the
-     * robot's feet, which is then out of view, and dropping it there made On Ball start again and again
-     * without a kick (scripts/phalanx bench approach, docs/matches.md session 11). After a real move (a
-     * referee's) that sighting is wrong until the ball is seen again; a beam the agent asked for forgets it
-     * ({@link #forgetPose}).
+     * The self belief was re-initialised: the filtered ball, its track and the last relative sighting
+     * (taken before the move) are dropped; the next sighting is accepted wherever it is.
      */
     private void dropBall() {
         ballFilter.clear();
         ballTracker.clear();
+        ballRelative = null;
+        ballTime = Double.NEGATIVE_INFINITY;
     }
 
     /** One cycle: every perception the server sent, in order. Never throws on odd content. */
@@ -211,8 +205,7 @@ public final class BeliefStore {
             // after a beam or trainer move): every ball position was placed with the old pose, or with
             // none, and is dropped; this frame's ball sighting then starts the ball belief afresh.
             // (Before issue 19 the ball was cleared only on a jump between two poses, which a FIFO
-            // queue emptied by refusals never shows: S6 kept the old ball for 2.4 s.) The last sighting,
-            // relative to the body, is kept until the next one: see dropBall.
+            // queue emptied by refusals never shows: S6 kept the old ball for 2.4 s.)
             if (selfFilter.starts() != starts) {
                 stats.selfStarts++;
                 if (selfStarted) dropBall();
@@ -275,8 +268,6 @@ public final class BeliefStore {
     private WorldBelief snapshot(FallState fall) {
         Pose2 self = selfFilter.pose();
         Vector2 ballGlobal = self == null ? null : ballFilter.position();
-        // No filtered ball (dropped with an old pose, or refused away): the last sighting, placed with this pose.
-        if (ballGlobal == null && self != null && ballRelative != null) ballGlobal = self.toGlobal(ballRelative);
         Vector2 rel = ballRelative;
         // With a self belief the filtered ball is the better relative estimate too.
         if (ballGlobal != null) rel = self.toRelative(ballGlobal);

@@ -138,49 +138,6 @@ class BeliefStoreRelocationTest {
         assertEquals(2, s.stats().selfStarts());
     }
 
-    /**
-     * The ball at the robot's feet (session 11, scripts/phalanx bench approach): the head looks down at it, sees
-     * no landmark, and the self belief drifts with the walk's odometry (here 0.8 m of claimed walking while the
-     * robot stood); the head comes up, sees landmarks but not the ball, and the belief is re-initialised at the
-     * true pose. The ball placed with the drifted pose goes, but its last sighting, relative to the body, stays
-     * and is placed with the new pose: the ball is still known, where it is. Before, it was lost for good.
-     */
-    @Test
-    void aReinitialisationWithTheBallOutOfViewKeepsItsLastSightingPlacedWithTheNewPose() {
-        for (LocalizationConfig.Filter f : LocalizationConfig.Filter.values()) {
-            LocalizationConfig c = LocalizationConfig.DEFAULT.withFilter(f);
-            BeliefStore s = store(c);
-            Vector2 ball = new Vector2(A.x() + 0.25, A.y() + 0.04);
-            WorldBelief b = null;
-            int n = 1;
-            for (; n <= 60; n++) b = s.update(cycle(n, A, ball));
-            assertEquals(0, b.ballGlobal().distanceTo(ball), 0.01, f.name());
-            // Head down: only the ball, every third cycle; the odometry claims 0.01 m forward a cycle.
-            for (int i = 0; i < 80; i++, n++) {
-                s.odometry(0.01, 0, 0);
-                b = s.update(n % 3 != 0 ? Scenes.perception(n * 0.02, null)
-                        : Scenes.perception(n * 0.02, Scenes.vision(new phalanx.comm.perception.Polar[Landmark.COUNT],
-                        Scenes.polar(A, ball.x(), ball.y(), 0.042), List.of())));
-            }
-            assertTrue(error(b, A) > 0.7, f + ": the belief drifted " + error(b, A));
-            double lastSeen = b.time() - b.ballAge();
-            // Head up: landmarks, no ball.
-            boolean relocated = false;
-            for (int i = 0; i < 30; i++, n++) {
-                b = s.update(n % 3 != 0 ? Scenes.perception(n * 0.02, null)
-                        : Scenes.perception(n * 0.02, Scenes.vision(Scenes.landmarks(field, Side.LEFT, A, RIGHT_END), null, List.of())));
-                if (error(b, A) < 0.05) relocated = true;
-                if (relocated) {
-                    assertNotNull(b.ballRelative(), f + ": the ball is still known, cycle " + n);
-                    assertEquals(0, b.ballGlobal().distanceTo(ball), 0.05, f + ": and where it is: " + b.ballGlobal());
-                    assertEquals(lastSeen, b.time() - b.ballAge(), 1e-9, f + ": as old as its last sighting");
-                }
-            }
-            assertTrue(relocated, f + ": re-initialised at the true pose");
-            assertEquals(2, s.stats().selfStarts(), f.name());
-        }
-    }
-
     @Test
     void forgetPoseStillDropsEverything() {
         BeliefStore s = store(LocalizationConfig.DEFAULT);
