@@ -14,9 +14,11 @@ import phalanx.model.robot.NaoModel;
  * @param obstacles  Avoid Obstacles (Algorithm 2)
  * @param keeper     the goalkeeper (5.13)
  * @param fallback   the field player's own choice while the coordinator is quiet
+ * @param approach   On Ball's way to the ball (ours)
+ * @param kickOff    our kick-off: a tap and a partner (ours)
  */
 public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obstacles obstacles,
-                          Keeper keeper, Fallback fallback, Approach approach) {
+                          Keeper keeper, Fallback fallback, Approach approach, KickOff kickOff) {
 
     /**
      * @param panAmplitudeDeg  Pan Head / Scan yaw swing each side (ours: ±90° with the 120° field of
@@ -222,26 +224,51 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         public static final Fallback DEFAULT = new Fallback(5.0, 0.5);
     }
 
+    /**
+     * Our kick-off (ours, issue 18): the taker's first touch turns KickOff into PlayOn, and any touch of
+     * the taker 0.1 s or more later, before another robot's, is a foul and a free kick for the other side
+     * (docs/protocol.md, "Set pieces"); On Ball's kick after its first nudge made every kick-off one. So
+     * the taker only taps the ball with slow forward steps and then leaves it to a partner, who waits
+     * beside the centre spot and plays it with On Ball once the mode is PlayOn.
+     *
+     * @param enabled         false: On Ball as in any other mode
+     * @param taker           the taker's player number (10, the centre forward: its kick-off spot is the
+     *                        nearest to the ball)
+     * @param partner         the partner's player number (9)
+     * @param partnerX        the partner's kick-off beam, own-team frame (the ball on the centre spot), m:
+     *                        behind the ball and to the right of the taker's path, out of its way
+     * @param partnerY
+     * @param holdSeconds     after the tap the taker leaves the ball alone this long ...
+     * @param releaseDistance ... or until the ball is this far from the centre spot (someone else moved it)
+     */
+    public record KickOff(boolean enabled, int taker, int partner, double partnerX, double partnerY,
+                          double holdSeconds, double releaseDistance) {
+        public static final KickOff DEFAULT = new KickOff(true, 10, 9, -0.55, -0.45, 6.0, 1.0);
+        public static final KickOff OFF = new KickOff(false, 10, 9, -0.55, -0.45, 6.0, 1.0);
+    }
+
     public static final AgentConfig DEFAULT = new AgentConfig(Head.DEFAULT, Beliefs.DEFAULT, Walk.DEFAULT,
-            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT);
+            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT);
 
     public AgentConfig {
         if (head == null || beliefs == null || walk == null || kick == null || obstacles == null
-                || keeper == null || fallback == null || approach == null) {
+                || keeper == null || fallback == null || approach == null || kickOff == null) {
             throw new IllegalArgumentException("every part of the agent config is required");
         }
     }
 
-    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach); }
+    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach, kickOff); }
 
-    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach); }
+    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach, kickOff); }
 
-    public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a); }
+    public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a, kickOff); }
+
+    public AgentConfig withKickOff(KickOff k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, k); }
 
     /** The defaults with the leg geometry of this robot type (the camera height for Track Object) and its kicks. */
     public static AgentConfig forRobotType(int type) {
         Head h = new Head(Head.DEFAULT.panAmplitudeDeg(), Head.DEFAULT.panPeriodSeconds(), Head.DEFAULT.scanPitchDownDeg(),
                 NaoModel.ofType(type), Head.DEFAULT.leadSeconds());
-        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT);
+        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT);
     }
 }

@@ -114,7 +114,7 @@ public final class Player {
             return new PlayerParts.Role(TeamChannel.coordinator(channel, key, o.team(), procedure), keeper);
         }
         return new PlayerParts.Role(TeamChannel.fieldPlayer(channel, key, o.team(), unum),
-                new FieldBrain(new FieldPlayerBehaviour(config.agent()), unum, o.players(), config.coordination()));
+                new FieldBrain(new FieldPlayerBehaviour(config.agent(), unum), unum, o.players(), config.coordination()));
     }
 
     /**

@@ -32,6 +32,7 @@ public record PlayerConfig(FieldSpec field, NaoModel body, LocalizationConfig lo
                 LocalizationConfig.DEFAULT, MotionConfig.DEFAULT, WalkConfig.forType(o.robotType()),
                 ChannelConfig.DEFAULT.withPlayers(o.players()), CoordinationConfig.THESIS,
                 agent.withKick(agent.kick().withDribbleWithin(o.dribbleWithin()))
-                        .withApproach(o.thesisApproach() ? AgentConfig.Approach.THESIS : agent.approach()));
+                        .withApproach(o.thesisApproach() ? AgentConfig.Approach.THESIS : agent.approach())
+                        .withKickOff(o.kickOffKick() ? AgentConfig.KickOff.OFF : agent.kickOff()));
     }
 }

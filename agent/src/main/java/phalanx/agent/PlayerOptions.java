@@ -6,7 +6,7 @@ import java.nio.file.Paths;
 /** The player's command line (issue 8). {@link #parse} names the flag at fault. */
 public record PlayerOptions(String host, int port, String team, int unum, int players, int robotType,
                             Path logDir, long connectTimeoutMillis, Path motions, String roboviz, boolean still,
-                            int dribbleWithin, boolean mj, boolean thesisApproach) {
+                            int dribbleWithin, boolean mj, boolean thesisApproach, boolean kickOffKick) {
 
     public static final String USAGE = """
             usage: phalanx-player [--host H] [--port P] [--team NAME] [--unum N] [--players 9|11] [--type T] [--log-dir DIR]
@@ -27,11 +27,13 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                              0: always kick, the thesis; 100: always dribble)
               --approach A   omni (default: the omnidirectional walk to the spot behind the ball, facing the goal;
                              AgentConfig.Approach) or thesis (4.6.2: Walk To Ball, then the align orbit)
+              --kick-off K   tap (default: in our kick-off player 10 taps the ball and player 9 plays it;
+                             AgentConfig.KickOff) or kick (On Ball as in any mode: the taker's second touch is a foul)
               --server S     simspark (default: rcssserver3d, a Nao) or mj (rcssservermj, a Booster T1; 7 players,
                              --unum 1-7; docs/rcssservermj.md)""";
 
     public static PlayerOptions defaults() {
-        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false, 8, false, false);
+        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false, 8, false, false, false);
     }
 
     /** Parses flags; throws IllegalArgumentException whose message names the bad flag and value. */
@@ -45,7 +47,7 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
         String roboviz = null;
         boolean still = false;
         int dribbleWithin = o.dribbleWithin;
-        boolean mj = false, thesisApproach = false;
+        boolean mj = false, thesisApproach = false, kickOffKick = false;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("-h") || flag.equals("--help")) throw new IllegalArgumentException("help");
@@ -75,6 +77,10 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                     if (!v.equals("omni") && !v.equals("thesis")) throw new IllegalArgumentException("--approach must be omni or thesis, got '" + v + "'");
                     thesisApproach = v.equals("thesis");
                 }
+                case "--kick-off" -> {
+                    if (!v.equals("tap") && !v.equals("kick")) throw new IllegalArgumentException("--kick-off must be tap or kick, got '" + v + "'");
+                    kickOffKick = v.equals("kick");
+                }
                 case "--server" -> {
                     if (!v.equals("simspark") && !v.equals("mj")) throw new IllegalArgumentException("--server must be simspark or mj, got '" + v + "'");
                     mj = v.equals("mj");
@@ -83,7 +89,7 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
             }
         }
         if (unum > players) throw new IllegalArgumentException("--unum " + unum + " is more than --players " + players);
-        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz, still, dribbleWithin, mj, thesisApproach);
+        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz, still, dribbleWithin, mj, thesisApproach, kickOffKick);
     }
 
     private static int intIn(String flag, String v, int min, int max) {

@@ -41,7 +41,7 @@ public final class PlayerRuntime {
     public PlayerRuntime(PlayerOptions options, PlayerParts parts) {
         this.options = options;
         this.parts = parts;
-        this.beams = new BeamPolicy(parts.field(), parts.config().coordination());
+        this.beams = new BeamPolicy(parts.field(), parts.config().coordination(), parts.config().agent().kickOff());
     }
 
     /** The reply to one perceptor message (the payload of one frame), ending in (syn). */

@@ -21,7 +21,7 @@ import java.util.logging.Logger;
  * A field player's decisions each cycle. Stand Up comes first whenever the robot is down (and it
  * waits while it is only falling). Otherwise it runs the coordinator's last order (thesis 5.3:
  * one action, executed until the next one), or, when there is none or the coordinator has gone
- * quiet, its own choice:
+ * quiet, its own choice (the kick-off's taker and partner excepted, {@link KickOffPlay}):
  * <ul>
  *   <li>On Ball when the ball is known, within {@code fallback.onBallDistance}, and no teammate
  *       seen within the memory time is closer to it (once on the ball, a teammate must be closer
@@ -39,6 +39,7 @@ public final class FieldPlayerBehaviour {
     private static final Logger LOG = Logger.getLogger(FieldPlayerBehaviour.class.getName());
     private final AgentConfig config;
     private final StandUp standUp;
+    private final KickOffPlay kickOff;
     private phalanx.comm.team.Action order;
     private ActionId runningId;
     private boolean runningOwn;
@@ -47,9 +48,14 @@ public final class FieldPlayerBehaviour {
     private Object lastPhase;
     private boolean lastOrdered;
 
-    public FieldPlayerBehaviour(AgentConfig config) {
+    /** A player with no part in our kick-off. */
+    public FieldPlayerBehaviour(AgentConfig config) { this(config, 0); }
+
+    /** Player {@code unum}: the kick-off's taker and partner ({@link KickOffPlay}) are chosen by number. */
+    public FieldPlayerBehaviour(AgentConfig config, int unum) {
         this.config = config;
         this.standUp = new StandUp(config);
+        this.kickOff = new KickOffPlay(config, unum);
     }
 
     /** The coordinator's last order to this player (null: none). */
@@ -71,6 +77,8 @@ public final class FieldPlayerBehaviour {
         if (f.isDown() || standUp.busy()) return standUp.decide(s);
         if (f == FallState.FALLING) return Decision.of(Move.STAND, HeadTarget.STRAIGHT);
         if (s.playMode() == PlayMode.GAME_OVER) return Decision.of(Move.STAND, HeadTarget.STRAIGHT);
+        Decision k = kickOff.decide(s);
+        if (k != null) return k;
         if (order != null && !coordinatorQuiet) {
             running = ordered(order);
             runningOwn = false;
