@@ -32,6 +32,14 @@ package phalanx.localization;
  * @param relocateSpreadMetres "close to each other" for relocateFrames: each disagreeing fix within this of the
  *                             previous one, else the count starts again from it (0.5 m); not in the thesis
  * @param relocateSpreadDeg    the same for the heading (15°); not in the thesis
+ * @param relocateResidualMetres a single vision frame re-initialises the self belief at once (issue 19, not in the
+ *                             thesis) when its pair fix is far from the belief (relocateMetres/relocateDeg; EKF:
+ *                             every landmark outside the gate) and every landmark seen agrees with that fix: the
+ *                             landmark's ground vector is within relocateResidualMetres + relocateResidualShare x
+ *                             its distance of where the fix puts it. 0.1 m; upright frames of the eight recordings
+ *                             are within 0.27 m at up to 30 m (at most 1.0 % of the distance; the first frames after
+ *                             the three moves 0.04-0.08 m). NaN: off (then relocateFrames frames as before)
+ * @param relocateResidualShare the share of the landmark's distance in that tolerance (0.02); not in the thesis
  * @param trackSetSize         Track Moving Object: observations per set (thesis 4.6: five)
  * @param trackDelay           Track Moving Object: delay between the two sets, observations (thesis 4.6: five)
  * @param fusionClusterMetres  team ball fusion cluster threshold (thesis 5.4: 1 m)
@@ -59,6 +67,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  double ekfPositionNoise, double ekfAngleNoiseDeg,
                                  int relocateFrames, double relocateMetres, double relocateDeg,
                                  double relocateSpreadMetres, double relocateSpreadDeg,
+                                 double relocateResidualMetres, double relocateResidualShare,
                                  int trackSetSize, int trackDelay,
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
@@ -80,6 +89,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             Filter.EKF, 10, 0.5, 15, 0.5, PairWeighting.GEOMETRY, 1.0,
             0.01, 0.5,
             2, 0.5, 15, 0.5, 15,
+            0.1, 0.02,
             5, 5,
             1.0, 3,
             50, 150, 20, 5, 30, 0.05, 3, 50);
@@ -99,7 +109,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
     public LocalizationConfig withFilter(Filter f) {
         return new LocalizationConfig(f, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
-                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, trackSetSize,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
@@ -108,7 +118,19 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
     public LocalizationConfig withRelocation(int frames, double metres, double deg, double spreadMetres, double spreadDeg) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, frames, metres,
-                deg, spreadMetres, spreadDeg, trackSetSize,
+                deg, spreadMetres, spreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
+    }
+
+    /**
+     * The same with another single-frame relocation tolerance (metres plus share of the distance); NaN turns
+     * the single-frame relocation off, leaving the relocateFrames rule.
+     */
+    public LocalizationConfig withRelocateResidual(double metres, double share) {
+        return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, metres, share, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
@@ -116,7 +138,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
     public LocalizationConfig withPairWeighting(PairWeighting w) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
-                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, trackSetSize,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
