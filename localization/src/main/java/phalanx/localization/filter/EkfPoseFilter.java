@@ -77,6 +77,7 @@ public final class EkfPoseFilter implements PoseFilter {
             // Every landmark agrees with the frame's own fix: a move, followed at once (issue 19).
             if (SelfLocalizer.consistent(fix, seen, residualMetres, residualShare)) {
                 start(fix);
+                for (int k = 0; k < seen.size(); k++) correct(seen.get(k), true);   // and this frame's landmarks
                 return true;
             }
             // The whole frame disagrees with the belief: count it towards a relocation, change nothing.

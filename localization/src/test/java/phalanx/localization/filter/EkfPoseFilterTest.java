@@ -70,7 +70,7 @@ class EkfPoseFilterTest {
         // agreeing with it (issue 19).
         Pose2 moved = new Pose2(3, -4, 90);
         assertTrue(f.update(moved, see(moved, new Random(9), 0, Landmark.F1R, Landmark.G1R)));
-        assertEquals(3, f.pose().x(), 1e-9);
+        assertEquals(3, f.pose().x(), 1e-6);
         assertEquals(2, f.starts());
     }
 
@@ -175,9 +175,10 @@ class EkfPoseFilterTest {
         EkfPoseFilter f = converged(a);
         assertTrue(f.update(fix, see(b, new Random(5), 0.01, FOUR)), "the first frame after the move");
         assertEquals(2, f.starts());
-        assertEquals(3.02, f.pose().x(), 1e-9, "at the frame's fix");
-        assertEquals(-2.01, f.pose().y(), 1e-9);
-        assertEquals(20.1, f.pose().thetaDeg(), 1e-9);
+        // At the frame's fix, then corrected by the frame's own landmarks: within 2 cm / 0.2 degrees of b.
+        assertEquals(3, f.pose().x(), 0.02, "at the frame's fix");
+        assertEquals(-2, f.pose().y(), 0.02);
+        assertEquals(20, f.pose().thetaDeg(), 0.2);
         for (int i = 0; i < 20; i++) f.update(b, see(b, new Random(30 + i), 0.01, FOUR));
         assertEquals(3, f.pose().x(), 0.02);
         assertEquals(2, f.starts(), "and it goes on from there");
@@ -185,7 +186,7 @@ class EkfPoseFilterTest {
         EkfPoseFilter two = converged(a);
         Pose2 c = new Pose2(-1, -4, 90);
         assertTrue(two.update(c, see(c, new Random(6), 0.01, Landmark.F1R, Landmark.G1R)), "two landmarks that agree");
-        assertEquals(-1, two.pose().x(), 1e-9);
+        assertEquals(-1, two.pose().x(), 0.02);
     }
 
     /**
@@ -198,9 +199,9 @@ class EkfPoseFilterTest {
         Pose2 a = new Pose2(-4, 1, 0), wrong = new Pose2(3, -2, 20);
         EkfPoseFilter f = converged(a);
         assertTrue(f.update(wrong, see(wrong, new Random(1), 0.01, FOUR)));
-        assertEquals(3, f.pose().x(), 1e-9);
+        assertEquals(3, f.pose().x(), 0.02);
         assertTrue(f.update(a, see(a, new Random(2), 0.01, FOUR)));
-        assertEquals(-4, f.pose().x(), 1e-9);
+        assertEquals(-4, f.pose().x(), 0.02);
         assertEquals(3, f.starts());
     }
 
