@@ -23,7 +23,9 @@ package phalanx.localization;
  *                             2 is the least that still ignores a single outlier frame; with a See every third
  *                             cycle the belief is back at most 2 steady vision frames after the move
  *                             (localization/README.md, "Per recording (issue 19)"). Replaces the EKF's earlier
- *                             ekfResetFrames (3 frames, position only, no agreement between the frames)
+ *                             ekfResetFrames (3 frames, position only, no agreement between the frames). Since the
+ *                             single-frame rule (relocateResidual*) this is the fallback for far frames whose
+ *                             landmarks do not agree with each other
  * @param relocateMetres       "far from the belief" for relocateFrames: Algorithm 1's self agreement (0.5 m);
  *                             the pair fixes of upright frames in the eight recordings are at most 0.30 m off
  *                             the true torso (S3 leaning before its fall), 0.23 m otherwise; not in the thesis
