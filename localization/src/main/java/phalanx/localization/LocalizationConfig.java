@@ -23,7 +23,9 @@ package phalanx.localization;
  *                             2 is the least that still ignores a single outlier frame; with a See every third
  *                             cycle the belief is back at most 2 steady vision frames after the move
  *                             (localization/README.md, "Per recording (issue 19)"). Replaces the EKF's earlier
- *                             ekfResetFrames (3 frames, position only, no agreement between the frames)
+ *                             ekfResetFrames (3 frames, position only, no agreement between the frames). Since the
+ *                             single-frame rule (relocateResidual*) this is the fallback for far frames whose
+ *                             landmarks do not agree with each other
  * @param relocateMetres       "far from the belief" for relocateFrames: Algorithm 1's self agreement (0.5 m);
  *                             the pair fixes of upright frames in the eight recordings are at most 0.30 m off
  *                             the true torso (S3 leaning before its fall), 0.23 m otherwise; not in the thesis
@@ -32,6 +34,14 @@ package phalanx.localization;
  * @param relocateSpreadMetres "close to each other" for relocateFrames: each disagreeing fix within this of the
  *                             previous one, else the count starts again from it (0.5 m); not in the thesis
  * @param relocateSpreadDeg    the same for the heading (15°); not in the thesis
+ * @param relocateResidualMetres a single vision frame re-initialises the self belief at once (issue 19, not in the
+ *                             thesis) when its pair fix is far from the belief (relocateMetres/relocateDeg; EKF:
+ *                             every landmark outside the gate) and every landmark seen agrees with that fix: the
+ *                             landmark's ground vector is within relocateResidualMetres + relocateResidualShare x
+ *                             its distance of where the fix puts it. 0.1 m; upright frames of the eight recordings
+ *                             are within 0.27 m at up to 30 m (at most 1.0 % of the distance; the first frames after
+ *                             the three moves 0.04-0.08 m). NaN: off (then relocateFrames frames as before)
+ * @param relocateResidualShare the share of the landmark's distance in that tolerance (0.02); not in the thesis
  * @param trackSetSize         Track Moving Object: observations per set (thesis 4.6: five)
  * @param trackDelay           Track Moving Object: delay between the two sets, observations (thesis 4.6: five)
  * @param fusionClusterMetres  team ball fusion cluster threshold (thesis 5.4: 1 m)
@@ -59,6 +69,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  double ekfPositionNoise, double ekfAngleNoiseDeg,
                                  int relocateFrames, double relocateMetres, double relocateDeg,
                                  double relocateSpreadMetres, double relocateSpreadDeg,
+                                 double relocateResidualMetres, double relocateResidualShare,
                                  int trackSetSize, int trackDelay,
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
@@ -80,6 +91,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             Filter.EKF, 10, 0.5, 15, 0.5, PairWeighting.GEOMETRY, 1.0,
             0.01, 0.5,
             2, 0.5, 15, 0.5, 15,
+            0.1, 0.02,
             5, 5,
             1.0, 3,
             50, 150, 20, 5, 30, 0.05, 3, 50);
@@ -99,7 +111,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
     public LocalizationConfig withFilter(Filter f) {
         return new LocalizationConfig(f, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
-                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, trackSetSize,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
@@ -108,7 +120,19 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
     public LocalizationConfig withRelocation(int frames, double metres, double deg, double spreadMetres, double spreadDeg) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, frames, metres,
-                deg, spreadMetres, spreadDeg, trackSetSize,
+                deg, spreadMetres, spreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
+    }
+
+    /**
+     * The same with another single-frame relocation tolerance (metres plus share of the distance); NaN turns
+     * the single-frame relocation off, leaving the relocateFrames rule.
+     */
+    public LocalizationConfig withRelocateResidual(double metres, double share) {
+        return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, metres, share, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }
@@ -116,7 +140,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
     public LocalizationConfig withPairWeighting(PairWeighting w) {
         return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
                 w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
-                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, trackSetSize,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
     }

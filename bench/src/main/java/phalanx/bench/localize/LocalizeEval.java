@@ -42,10 +42,15 @@ public final class LocalizeEval {
     /**
      * One replayed cycle, as the figures see it. {@code k} is the perceptor line (1-based, the README's
      * message count); {@code believed} and {@code ballBelieved} are in the field frame (null: no belief);
-     * {@code ballInView}: the ball was in a vision frame within the last {@link #BALL_VIEW_SECONDS}.
+     * {@code ballInView}: the ball was in a vision frame within the last {@link #BALL_VIEW_SECONDS};
+     * {@code vision}: this line carried a vision frame (See).
      */
     public record Cycle(int k, GroundTruth.Line truth, boolean fallen, Pose2 believed, Vector2 ballBelieved,
-                        boolean ballInView) {
+                        boolean ballInView, boolean vision) {
+        /** A cycle that carried a vision frame (synthetic cycles in tests). */
+        public Cycle(int k, GroundTruth.Line truth, boolean fallen, Pose2 believed, Vector2 ballBelieved, boolean ballInView) {
+            this(k, truth, fallen, believed, ballBelieved, ballInView, true);
+        }
         /** Self position error (m), NaN without a belief or a true torso. */
         public double selfError() {
             return believed == null || !truth.hasTorso() ? Double.NaN
@@ -76,17 +81,23 @@ public final class LocalizeEval {
      * move until the self error is first at most {@link #RECOVERED_METRES} again (issue 19).
      */
     public static final double MOVE_METRES = 1.0, RECOVERED_METRES = 1.0;
+    // max_seen and rec_seen (issue 19): the same figures without the cycles between a move and the first vision
+    // frame after it (that frame's line included, so at least one frame shows the new pose). Before that frame no
+    // filter can know of the move.
 
     /** The errors of one or more recordings. */
     public static final class Result {
         final String name;
         /** self and theta: upright cycles; ball: cycles with the ball in view in the last second; ballAll: every cycle with a ball belief. */
-        final List<Double> self = new ArrayList<>(), theta = new ArrayList<>(), ball = new ArrayList<>(),
+        final List<Double> self = new ArrayList<>(), seen = new ArrayList<>(), theta = new ArrayList<>(), ball = new ArrayList<>(),
                 ballAll = new ArrayList<>(), fallenSelf = new ArrayList<>();
         final List<Cycle> cycleLog = new ArrayList<>();
         long cycles, malformed, fallenCycles, vision, fixes, selfOver1m, moves;
         /** Most cycles any move took to recover (-1: no move); the move under way and its cycles so far. */
         int recoverMax = -1, recovering = -1;
+        /** The same from the first vision frame after each move on (-1: none); waiting: a move without a frame yet. */
+        int seenRecoverMax = -1, seenRecovering = -1;
+        boolean waiting;
         private double lastX = Double.NaN, lastY = Double.NaN;
         final List<BeliefStats> stats = new ArrayList<>();
 
@@ -101,6 +112,9 @@ public final class LocalizeEval {
                     moves++;
                     if (recovering >= 0) recoverMax = Math.max(recoverMax, recovering);
                     recovering = 0;
+                    if (seenRecovering >= 0) seenRecoverMax = Math.max(seenRecoverMax, seenRecovering);
+                    seenRecovering = -1;
+                    waiting = true;
                 }
                 lastX = g.x();
                 lastY = g.y();
@@ -113,12 +127,25 @@ public final class LocalizeEval {
                     recovering++;
                 }
             }
+            if (waiting && c.vision()) {
+                waiting = false;
+                seenRecovering = 0;
+            }
+            if (seenRecovering >= 0) {
+                if (c.selfError() <= RECOVERED_METRES) {
+                    seenRecoverMax = Math.max(seenRecoverMax, seenRecovering);
+                    seenRecovering = -1;
+                } else {
+                    seenRecovering++;
+                }
+            }
             if (c.fallen()) fallenCycles++;
             double e = c.selfError();
             if (Double.isFinite(e)) {
                 if (c.fallen()) fallenSelf.add(e);
                 else {
                     self.add(e);
+                    if (!waiting) seen.add(e);
                     theta.add(c.headingError());
                     if (e > 1.0) selfOver1m++;
                 }
@@ -131,12 +158,13 @@ public final class LocalizeEval {
         }
 
         void add(Result r) {
-            self.addAll(r.self); theta.addAll(r.theta); ball.addAll(r.ball); ballAll.addAll(r.ballAll);
+            self.addAll(r.self); seen.addAll(r.seen); theta.addAll(r.theta); ball.addAll(r.ball); ballAll.addAll(r.ballAll);
             fallenSelf.addAll(r.fallenSelf);
             cycles += r.cycles; malformed += r.malformed; fallenCycles += r.fallenCycles;
             vision += r.vision; fixes += r.fixes; selfOver1m += r.selfOver1m; stats.addAll(r.stats);
             moves += r.moves;
             recoverMax = Math.max(recoverMax, r.recoverCycles());
+            seenRecoverMax = Math.max(seenRecoverMax, r.seenRecoverCycles());
         }
 
         public String name() { return name; }
@@ -144,6 +172,11 @@ public final class LocalizeEval {
         public double selfMedian() { return quantile(self, 0.5); }
         public double selfP95() { return quantile(self, 0.95); }
         public double selfMax() { return quantile(self, 1.0); }
+        /**
+         * The self max without the cycles from a move until the first vision frame after it (issue 19): what a
+         * filter could have known. Equal to {@link #selfMax} without a move.
+         */
+        public double selfMaxSeen() { return quantile(seen, 1.0); }
         public double thetaMedian() { return quantile(theta, 0.5); }
         public double thetaP95() { return quantile(theta, 0.95); }
         public double ballMedian() { return quantile(ball, 0.5); }
@@ -162,6 +195,11 @@ public final class LocalizeEval {
          * {@link #RECOVERED_METRES} (a move not recovered by the end counts to the end); -1 without a move.
          */
         public int recoverCycles() { return Math.max(recoverMax, recovering); }
+        /**
+         * The same counted from the first vision frame after each move (0: that frame's line is within
+         * {@link #RECOVERED_METRES}); -1 without a move, or with no vision frame after it.
+         */
+        public int seenRecoverCycles() { return Math.max(seenRecoverMax, seenRecovering); }
         /** Every cycle of a single recording, in order (empty for a pooled result). */
         public List<Cycle> cycleLog() { return cycleLog; }
 
@@ -246,7 +284,7 @@ public final class LocalizeEval {
             boolean fallen = g.hasTorso() && g.fallen();
             Pose2 self = b.self() == null ? null : toField(b.self(), b.side());
             Vector2 ball = b.ballGlobal() == null ? null : b.side() == Side.RIGHT ? b.ballGlobal().times(-1) : b.ballGlobal();
-            r.observe(new Cycle(i + 1, g, fallen, self, ball, now - ballSeenAt <= BALL_VIEW_SECONDS + 1e-9));
+            r.observe(new Cycle(i + 1, g, fallen, self, ball, now - ballSeenAt <= BALL_VIEW_SECONDS + 1e-9, p.hasVision()));
         }
         r.vision = store.stats().visionFrames();
         r.fixes = store.stats().selfFixes();
@@ -378,16 +416,16 @@ public final class LocalizeEval {
         return all;
     }
 
-    static final String TABLE_HEADER = String.format(Locale.ROOT, "%-10s %6s %6s %8s %8s %8s %8s %6s %8s %8s %8s %8s %7s %5s %7s",
+    static final String TABLE_HEADER = String.format(Locale.ROOT, "%-10s %6s %6s %8s %8s %8s %8s %6s %8s %8s %8s %8s %7s %5s %7s %8s %8s",
             "recording", "cycles", "self_n", "self_med", "self_p95", "self_max", "hdg_p95", "ball_n", "ball_med",
-            "ball_p95", "ball_max", "fix_rate", "self>1m", "moves", "recover");
+            "ball_p95", "ball_max", "fix_rate", "self>1m", "moves", "recover", "max_seen", "rec_seen");
 
     /** One table line: metres, heading in degrees; ball over cycles with the ball in view in the last second. */
     static String row(Result r) {
-        return String.format(Locale.ROOT, "%-10s %6d %6d %8.3f %8.3f %8.3f %8.2f %6d %8.3f %8.3f %8.3f %8.3f %7d %5d %7s",
+        return String.format(Locale.ROOT, "%-10s %6d %6d %8.3f %8.3f %8.3f %8.2f %6d %8.3f %8.3f %8.3f %8.3f %7d %5d %7s %8.3f %8s",
                 r.name, r.cycles, r.self.size(), r.selfMedian(), r.selfP95(), r.selfMax(), r.thetaP95(),
                 r.ball.size(), r.ballMedian(), r.ballP95(), r.ballMax(), r.fixRate(), r.selfOver1m, r.moves,
-                recover(r));
+                recover(r), r.selfMaxSeen(), recoverSeen(r));
     }
 
     /** One filter's block: header, one line per recording, the pooled line, the breaks, the worst cycles. */
@@ -435,18 +473,21 @@ public final class LocalizeEval {
     }
 
     static final String[] TSV_HEADER = {"filter", "recording", "cycles", "self_n", "self_median_m", "self_p95_m", "self_max_m",
-            "heading_p95_deg", "ball_n", "ball_median_m", "ball_p95_m", "ball_max_m", "fix_rate", "self_over_1m", "moves", "recover_cycles", "breaks"};
+            "heading_p95_deg", "ball_n", "ball_median_m", "ball_p95_m", "ball_max_m", "fix_rate", "self_over_1m", "moves", "recover_cycles", "self_max_seen_m", "recover_seen_cycles", "breaks"};
 
     static String tsvRow(String label, Result r) {
         List<String> b = Limits.ISSUE_19.broken(r);
         return String.join("\t", label, r.name, Long.toString(r.cycles), Integer.toString(r.self.size()),
                 f3(r.selfMedian()), f3(r.selfP95()), f3(r.selfMax()), String.format(Locale.ROOT, "%.2f", r.thetaP95()),
                 Integer.toString(r.ball.size()), f3(r.ballMedian()), f3(r.ballP95()), f3(r.ballMax()), f3(r.fixRate()),
-                Long.toString(r.selfOver1m), Long.toString(r.moves), recover(r), b.isEmpty() ? "-" : String.join(",", b));
+                Long.toString(r.selfOver1m), Long.toString(r.moves), recover(r), f3(r.selfMaxSeen()), recoverSeen(r), b.isEmpty() ? "-" : String.join(",", b));
     }
 
     /** The recover figure: cycles, or "-" without a move. */
     static String recover(Result r) { return r.recoverCycles() < 0 ? "-" : Integer.toString(r.recoverCycles()); }
+
+    /** The rec_seen figure: cycles from the first vision frame after a move, or "-". */
+    static String recoverSeen(Result r) { return r.seenRecoverCycles() < 0 ? "-" : Integer.toString(r.seenRecoverCycles()); }
 
     private static String f3(double v) { return String.format(Locale.ROOT, "%.3f", v); }
     private static String num1(double v) { return String.format(Locale.ROOT, "%.1f", v); }

@@ -74,7 +74,7 @@ class LocalizeEvalPerRecordingTest {
         assertEquals(-1, r.recoverCycles());
 
         String row = LocalizeEval.row(r);
-        assertEquals(List.of("SYN", "21", "20", "0.100", "0.190", "2.000", "19.00", "10", "0.200", "0.400", "0.400", "0.714", "1", "0", "-"),
+        assertEquals(List.of("SYN", "21", "20", "0.100", "0.190", "2.000", "19.00", "10", "0.200", "0.400", "0.400", "0.714", "1", "0", "-", "2.000", "-"),
                 Arrays.asList(row.trim().split("\\s+")), row);
         assertEquals(LocalizeEval.TABLE_HEADER.trim().split("\\s+").length, row.trim().split("\\s+").length, "one column per header");
 
@@ -221,7 +221,11 @@ class LocalizeEvalPerRecordingTest {
         assertEquals(4, r.recoverCycles());
         assertEquals(4, r.selfOver1m());
         String[] row = LocalizeEval.row(r).trim().split("\\s+");
-        assertEquals("2", row[row.length - 2]);
+        assertEquals("2", row[row.length - 4]);
+        assertEquals("4", row[row.length - 3]);
+        // Every synthetic cycle carries a vision frame: counted from the move's own line, the same figures.
+        assertEquals(4, r.seenRecoverCycles());
+        assertEquals(3.0, r.selfMaxSeen(), 1e-9);
         assertEquals("4", row[row.length - 1]);
 
         LocalizeEval.Result open = new LocalizeEval.Result("OPEN");
@@ -231,6 +235,48 @@ class LocalizeEvalPerRecordingTest {
         LocalizeEval.Result all = LocalizeEval.pooled(List.of(r, open, synthetic()));
         assertEquals(3, all.moves());
         assertEquals(7, all.recoverCycles());
+    }
+
+    /** As {@link #at}, with or without a vision frame on the line. */
+    private static LocalizeEval.Cycle at(int k, double tx, double bx, boolean vision) {
+        LocalizeEval.Cycle c = at(k, tx, bx);
+        return new LocalizeEval.Cycle(c.k(), c.truth(), false, c.believed(), c.ballBelieved(), true, vision);
+    }
+
+    /**
+     * max_seen and rec_seen (issue 19) by hand: a See every third line (3, 6, 9, ...); a move of 4 m at line 7,
+     * the belief following at the See of line 9. self_max 4 m and recover 2 (lines 7 and 8); from the first
+     * frame after the move (line 9) on the belief is right: max_seen is the 0.2 m before the move, rec_seen 0.
+     * A second move at line 14 followed only at line 18 (the See of line 15 missed it): rec_seen 3 (15-17).
+     */
+    @Test
+    void theFiguresFromTheFirstVisionFrameAfterAMoveByHand() {
+        LocalizeEval.Result r = new LocalizeEval.Result("SEEN");
+        for (int k = 1; k <= 6; k++) r.observe(at(k, 0, k == 6 ? 0.2 : 0, k % 3 == 0));
+        for (int k = 7; k <= 8; k++) r.observe(at(k, 4, 0, false));
+        for (int k = 9; k <= 13; k++) r.observe(at(k, 4, 4, k % 3 == 0));
+        for (int k = 14; k <= 17; k++) r.observe(at(k, 8, 4, k % 3 == 0));
+        for (int k = 18; k <= 20; k++) r.observe(at(k, 8, 8, k % 3 == 0));
+        assertEquals(2, r.moves());
+        assertEquals(4.0, r.selfMax(), 1e-9);
+        assertEquals(4, r.recoverCycles(), "the second move: lines 14-17");
+        assertEquals(4.0, r.selfMaxSeen(), 1e-9, "lines 15-17 were seen wrong");
+        assertEquals(3, r.seenRecoverCycles());
+        LocalizeEval.Result one = new LocalizeEval.Result("ONE");
+        for (int k = 1; k <= 6; k++) one.observe(at(k, 0, k == 6 ? 0.2 : 0, k % 3 == 0));
+        for (int k = 7; k <= 8; k++) one.observe(at(k, 4, 0, false));
+        for (int k = 9; k <= 13; k++) one.observe(at(k, 4, 4, k % 3 == 0));
+        assertEquals(4.0, one.selfMax(), 1e-9);
+        assertEquals(2, one.recoverCycles());
+        assertEquals(0.2, one.selfMaxSeen(), 1e-9);
+        assertEquals(0, one.seenRecoverCycles());
+        String[] row = LocalizeEval.row(one).trim().split("\\s+");
+        assertEquals("0.200", row[row.length - 2]);
+        assertEquals("0", row[row.length - 1]);
+        LocalizeEval.Result all = LocalizeEval.pooled(List.of(r, one));
+        assertEquals(4.0, all.selfMaxSeen(), 1e-9);
+        assertEquals(3, all.seenRecoverCycles());
+        assertEquals(-1, new LocalizeEval.Result("NONE").seenRecoverCycles());
     }
 
     /**
@@ -264,21 +310,28 @@ class LocalizeEvalPerRecordingTest {
                 assertEquals(1 + r.moves(), starts, what + ": re-initialised at the move only");
                 if (moved) {
                     assertTrue(r.selfOver1m() < before[i][0], what + ": cycles over 1 m, before " + (int) before[i][0]);
-                    assertTrue(r.recoverCycles() <= 10, what);
-                    assertEquals(List.of("self_max"), LocalizeEval.Limits.ISSUE_19.broken(r),
-                            what + ": only the move itself (the belief is the old pose until the next frames) breaks a limit");
+                    // The single-frame rule: re-initialised at the first vision frame after the move (a See every
+                    // third line: at most 2 lines before it), so nothing is wrong from that frame on.
+                    assertTrue(r.recoverCycles() <= 2, what);
+                    assertEquals(0, r.seenRecoverCycles(), what);
+                    assertTrue(r.selfMaxSeen() < 0.1, what + ": max_seen");
+                    List<String> broken = LocalizeEval.Limits.ISSUE_19.broken(r);
+                    assertTrue(broken.isEmpty() || broken.equals(List.of("self_max")),
+                            what + ": only the move itself (the old pose until the first frame after it) breaks a limit");
                 } else {
+                    assertEquals(r.selfMax(), r.selfMaxSeen(), 1e-12, what);
+                    assertEquals(-1, r.seenRecoverCycles(), what);
                     assertEquals(0, r.selfOver1m(), what);
                     assertEquals(List.of(), LocalizeEval.Limits.ISSUE_19.broken(r), what);
                 }
                 // Not worse (the before figures are rounded to the printed digits), except the ball p95 of
-                // two moved recordings by less than 1 cm: EKF S6 0.025 -> 0.033 m, FIFO S4_agent2 0.021 ->
-                // 0.024 m (the ball belief restarts at the re-initialisation from a pose taken from two
-                // fixes; in S6 the head pan then hides the ball, so those sightings stay for 1 s).
+                // moved recordings by less than 1.5 cm: EKF S6 0.025 -> 0.038 m, FIFO S4_agent2 0.021 ->
+                // 0.026 m (the ball belief restarts at the re-initialisation, placed with the first poses
+                // after it, a few cm off; in S6 the head pan then hides the ball, so those stay for 1 s).
                 assertTrue(r.selfP95() <= before[i][1] + 0.0005, what + ": self p95, before " + before[i][1]);
                 assertTrue(r.thetaP95() <= before[i][2] + 0.005, what + ": heading p95, before " + before[i][2]);
                 assertTrue(r.ballMedian() <= before[i][3] + 0.0005, what + ": ball median, before " + before[i][3]);
-                assertTrue(r.ballP95() <= Math.min(before[i][4] + 0.01, 0.6), what + ": ball p95, before " + before[i][4]);
+                assertTrue(r.ballP95() <= Math.min(before[i][4] + 0.015, 0.6), what + ": ball p95, before " + before[i][4]);
             }
         }
     }

@@ -4,6 +4,7 @@ import phalanx.localization.LocalizationConfig;
 import phalanx.model.field.Angles;
 import phalanx.model.field.Pose2;
 import phalanx.localization.vision.LandmarkSighting;
+import phalanx.localization.vision.SelfLocalizer;
 
 import java.util.List;
 
@@ -12,7 +13,10 @@ import java.util.List;
  * filter over (x, y, theta). Prediction: the walk's odometry plus process noise every cycle.
  * Correction: every seen landmark on its own (so one landmark helps too), the measurement being
  * the landmark's ground vector in the body frame; a Mahalanobis gate drops outliers. Started from
- * the pair-triangulation fix, and re-started from the mean of their fixes (relocation, issue 19) after
+ * the pair-triangulation fix. Re-started from the fix of a single frame that disagrees with the belief (every
+ * landmark outside the gate and the fix farther than {@code relocateMetres}/{@code relocateDeg}) while its
+ * landmarks agree with that fix ({@link SelfLocalizer#consistent}, {@code relocateResidual*}; issue 19).
+ * Otherwise re-started from the mean of their fixes (relocation, issue 19) after
  * {@code relocateFrames} vision frames in a row that disagree with the belief: every landmark outside
  * the gate and the fix farther than {@code relocateMetres}/{@code relocateDeg} from the belief, each
  * fix within {@code relocateSpread*} of the one before (beam, trainer or referee move). A frame whose fix
@@ -27,7 +31,7 @@ public final class EkfPoseFilter implements PoseFilter {
 
     private final double qPos, qAng;
     private final int relocateFrames;
-    private final double relocateMetres, relocateDeg, spreadMetres, spreadDeg;
+    private final double relocateMetres, relocateDeg, spreadMetres, spreadDeg, residualMetres, residualShare;
     private boolean valid;
     private double x, y, t;                       // t in radians
     private double p00, p01, p02, p11, p12, p22;  // symmetric covariance
@@ -44,6 +48,8 @@ public final class EkfPoseFilter implements PoseFilter {
         relocateDeg = c.relocateDeg();
         spreadMetres = c.relocateSpreadMetres();
         spreadDeg = c.relocateSpreadDeg();
+        residualMetres = c.relocateResidualMetres();
+        residualShare = c.relocateResidualShare();
     }
 
     @Override public void predict(double forward, double left, double turnDeg) {
@@ -68,6 +74,12 @@ public final class EkfPoseFilter implements PoseFilter {
         boolean far = fix != null && (Math.hypot(fix.x() - x, fix.y() - y) > relocateMetres
                 || Math.abs(Angles.difference(fix.thetaDeg(), Math.toDegrees(t))) > relocateDeg);
         if (far && !anyInGate(seen)) {
+            // Every landmark agrees with the frame's own fix: a move, followed at once (issue 19).
+            if (SelfLocalizer.consistent(fix, seen, residualMetres, residualShare)) {
+                start(fix);
+                for (int k = 0; k < seen.size(); k++) correct(seen.get(k), true);   // and this frame's landmarks
+                return true;
+            }
             // The whole frame disagrees with the belief: count it towards a relocation, change nothing.
             boolean near = badFrames > 0 && Math.hypot(fix.x() - lastBadX, fix.y() - lastBadY) <= spreadMetres
                     && Math.abs(Angles.difference(fix.thetaDeg(), lastBadDeg)) <= spreadDeg;

@@ -17,7 +17,8 @@ import phalanx.model.field.Vector2;
  * are each farther than {@code relocateMetres} (or {@code relocateDeg}) from the average and each within
  * {@code spreadMetres} ({@code spreadDeg}) of the one before, the queue is replaced by them: the robot
  * was moved (beam, trainer or referee). Algorithm 1 alone needs MaxSize refusals before its queue is
- * empty and a new belief can start (issue 19). Accepted or near estimates reset the count.
+ * empty and a new belief can start (issue 19). Accepted or near estimates reset the count. A single far
+ * estimate flagged consistent ({@link #add(Pose2, boolean)}: every landmark of its frame fits it) relocates at once.
  */
 public final class LocalizationFilter {
     private final int maxSize;
@@ -68,15 +69,24 @@ public final class LocalizationFilter {
 
     /** Algorithm 1 with a pose estimate; returns true when it was accepted into the queue. */
     public boolean add(Pose2 estimate) {
-        return add(estimate.x(), estimate.y(), estimate.thetaDeg());
+        return add(estimate.x(), estimate.y(), estimate.thetaDeg(), false);
+    }
+
+    /**
+     * The same, where {@code consistent} says the estimate's own evidence agrees with it (the self filter: every
+     * landmark of the frame fits the fix). With relocation on, a consistent estimate far from the average
+     * replaces the queue at once instead of being refused (issue 19).
+     */
+    public boolean add(Pose2 estimate, boolean consistent) {
+        return add(estimate.x(), estimate.y(), estimate.thetaDeg(), consistent);
     }
 
     /** Algorithm 1 with a position estimate (the ball). */
     public boolean add(Vector2 estimate) {
-        return add(estimate.x(), estimate.y(), 0);
+        return add(estimate.x(), estimate.y(), 0, false);
     }
 
-    private boolean add(double x, double y, double t) {
+    private boolean add(double x, double y, double t, boolean consistent) {
         if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(t)) return false;
         if (size > 0 && !agrees(x, y, t)) {
             boolean far = relocateFrames > 0 && far(x, y, t);
@@ -86,12 +96,13 @@ public final class LocalizationFilter {
                 pending = 0;
                 return false;
             }
-            // Relocation (not in the thesis): count this refusal if it agrees with the one before.
-            if (pending > 0 && !nearLastPending(x, y, t)) pending = 0;
+            // Relocation (not in the thesis): count this refusal if it agrees with the one before; a
+            // consistent estimate is enough on its own.
+            if (consistent || (pending > 0 && !nearLastPending(x, y, t))) pending = 0;
             px[pending] = x;
             py[pending] = y;
             pt[pending] = t;
-            if (++pending < relocateFrames) return false;
+            if (++pending < relocateFrames && !consistent) return false;
             head = 0;
             size = 0;
             for (int k = 0; k < pending; k++) {

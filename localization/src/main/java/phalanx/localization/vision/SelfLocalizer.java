@@ -86,6 +86,25 @@ public final class SelfLocalizer {
         return bestErr <= 20 ? best : null;
     }
 
+    /**
+     * Whether the frame's landmarks agree with each other (issue 19, not in the thesis): at least two, and each
+     * seen ground vector within {@code metres + share * distance} of where the fix puts that landmark. A fix from
+     * consistent landmarks is what a move shows; a wrong camera pose (tilt, a mirrored pair) does not fit them all.
+     * NaN thresholds: never. No allocation.
+     */
+    public static boolean consistent(Pose2 fix, List<LandmarkSighting> seen, double metres, double share) {
+        if (fix == null || seen.size() < 2) return false;
+        double r = Math.toRadians(fix.thetaDeg()), c = Math.cos(r), s = Math.sin(r);
+        for (int k = 0; k < seen.size(); k++) {
+            LandmarkSighting l = seen.get(k);
+            double dx = l.position().x() - fix.x(), dy = l.position().y() - fix.y();
+            double ex = l.relative().x() - (c * dx + s * dy), ey = l.relative().y() - (-s * dx + c * dy);
+            double tol = metres + share * Math.hypot(l.relative().x(), l.relative().y());
+            if (!(Math.hypot(ex, ey) <= tol)) return false;
+        }
+        return true;
+    }
+
     /** to.minus(new Vector2(x, y)).angleDeg() without the vectors (every landmark pair of every frame). */
     private static double bearingDeg(double x, double y, Vector2 to) {
         return Math.toDegrees(Math.atan2(to.y() - y, to.x() - x));

@@ -66,12 +66,12 @@ class EkfPoseFilterTest {
         List<LandmarkSighting> wild = see(new Pose2(5, 5, 0), new Random(2), 0, Landmark.F1R);
         assertFalse(f.update(null, wild), "5 m off: outside the gate");
         assertEquals(-1, f.pose().x(), 1e-9);
-        // Trainer move to (3, -4): the first frames are refused, then the filter restarts at the fix.
+        // Trainer move to (3, -4): the first frame there restarts the filter at its fix, its two landmarks
+        // agreeing with it (issue 19).
         Pose2 moved = new Pose2(3, -4, 90);
-        for (int i = 1; i < c.relocateFrames(); i++)
-            assertFalse(f.update(moved, see(moved, new Random(i), 0, Landmark.F1R, Landmark.G1R)));
         assertTrue(f.update(moved, see(moved, new Random(9), 0, Landmark.F1R, Landmark.G1R)));
-        assertEquals(3, f.pose().x(), 1e-9);
+        assertEquals(3, f.pose().x(), 1e-6);
+        assertEquals(2, f.starts());
     }
 
     @Test
@@ -88,19 +88,26 @@ class EkfPoseFilterTest {
 
     private static final Landmark[] FOUR = {Landmark.F1R, Landmark.G1R, Landmark.G2R, Landmark.F2R};
 
+    /** Without the single-frame relocation: the relocateFrames rule alone (as before issue 19's second fix). */
+    private static final LocalizationConfig FRAMES_ONLY = LocalizationConfig.DEFAULT.withRelocateResidual(Double.NaN, Double.NaN);
+
     /** A converged filter at the given pose. */
     private EkfPoseFilter converged(Pose2 at) {
-        EkfPoseFilter f = new EkfPoseFilter(LocalizationConfig.DEFAULT);
+        return converged(at, LocalizationConfig.DEFAULT);
+    }
+
+    private EkfPoseFilter converged(Pose2 at, LocalizationConfig c) {
+        EkfPoseFilter f = new EkfPoseFilter(c);
         f.update(at, List.of());
         for (int i = 0; i < 30; i++) f.update(at, see(at, new Random(i), 0.01, FOUR));
         return f;
     }
 
     @Test
-    void aMoveIsFollowedAtTheKthDisagreeingFrame() {
-        int k = LocalizationConfig.DEFAULT.relocateFrames();
+    void withoutTheSingleFrameRuleAMoveIsFollowedAtTheKthDisagreeingFrame() {
+        int k = FRAMES_ONLY.relocateFrames();
         Pose2 a = new Pose2(-4, 1, 0), b = new Pose2(-2, 3, 30);
-        EkfPoseFilter f = converged(a);
+        EkfPoseFilter f = converged(a, FRAMES_ONLY);
         assertEquals(1, f.starts());
         for (int i = 1; i < k; i++) {
             assertFalse(f.update(b, see(b, new Random(50 + i), 0.01, FOUR)), "frame " + i + " after the move");
@@ -116,11 +123,11 @@ class EkfPoseFilterTest {
     }
 
     @Test
-    void aSingleOutlierFrameDoesNotMoveTheBelief() {
+    void aSingleOutlierFrameWhoseLandmarksDisagreeDoesNotMoveTheBelief() {
         Pose2 a = new Pose2(-4, 1, 0), wrong = new Pose2(3, -2, 20);
         EkfPoseFilter f = converged(a);
         for (int round = 0; round < 10; round++) {
-            assertFalse(f.update(wrong, see(wrong, new Random(round), 0.01, FOUR)), "an outlier frame");
+            assertFalse(f.update(wrong, skewed(see(wrong, new Random(round), 0.01, FOUR), 3, 1.0)), "an outlier frame");
             assertEquals(-4, f.pose().x(), 0.02);
             assertTrue(f.update(a, see(a, new Random(100 + round), 0.01, FOUR)));
         }
@@ -129,9 +136,9 @@ class EkfPoseFilterTest {
     }
 
     @Test
-    void farFramesThatDisagreeWithEachOtherDoNotRelocate() {
+    void withoutTheSingleFrameRuleFarFramesThatDisagreeWithEachOtherDoNotRelocate() {
         Pose2 a = new Pose2(-4, 1, 0), b = new Pose2(3, -2, 20), c = new Pose2(3, 2, 20);
-        EkfPoseFilter f = converged(a);
+        EkfPoseFilter f = converged(a, FRAMES_ONLY);
         assertFalse(f.update(b, see(b, new Random(1), 0.01, FOUR)));
         assertFalse(f.update(c, see(c, new Random(2), 0.01, FOUR)), "4 m from the previous far fix");
         assertEquals(-4, f.pose().x(), 0.02);
@@ -146,6 +153,63 @@ class EkfPoseFilterTest {
         EkfPoseFilter f = converged(a);
         for (int i = 0; i < 5; i++) assertTrue(f.update(bad, see(a, new Random(i), 0.01, FOUR)), "the landmarks pass the gate");
         assertEquals(1, f.starts());
+        assertEquals(-4, f.pose().x(), 0.02);
+    }
+
+    /** The sightings with landmark i's ground vector moved by dx metres (a frame whose landmarks disagree). */
+    private static List<LandmarkSighting> skewed(List<LandmarkSighting> seen, int i, double dx) {
+        List<LandmarkSighting> out = new ArrayList<>(seen);
+        LandmarkSighting l = out.get(i);
+        out.set(i, new LandmarkSighting(l.landmark(), l.position(), l.relative().plus(new Vector2(dx, 0))));
+        return out;
+    }
+
+    /**
+     * Issue 19: one frame far from the belief whose landmarks all agree with its fix re-initialises the filter
+     * there at once (a trainer move): with four landmarks and with two. Before the fix the first such frame was
+     * refused and the second restarted it (relocateFrames = 2).
+     */
+    @Test
+    void aFarFrameWhoseLandmarksAgreeReinitialisesAtOnce() {
+        Pose2 a = new Pose2(-4, 1, 0), b = new Pose2(3, -2, 20), fix = new Pose2(3.02, -2.01, 20.1);
+        EkfPoseFilter f = converged(a);
+        assertTrue(f.update(fix, see(b, new Random(5), 0.01, FOUR)), "the first frame after the move");
+        assertEquals(2, f.starts());
+        // At the frame's fix, then corrected by the frame's own landmarks: within 2 cm / 0.2 degrees of b.
+        assertEquals(3, f.pose().x(), 0.02, "at the frame's fix");
+        assertEquals(-2, f.pose().y(), 0.02);
+        assertEquals(20, f.pose().thetaDeg(), 0.2);
+        for (int i = 0; i < 20; i++) f.update(b, see(b, new Random(30 + i), 0.01, FOUR));
+        assertEquals(3, f.pose().x(), 0.02);
+        assertEquals(2, f.starts(), "and it goes on from there");
+
+        EkfPoseFilter two = converged(a);
+        Pose2 c = new Pose2(-1, -4, 90);
+        assertTrue(two.update(c, see(c, new Random(6), 0.01, Landmark.F1R, Landmark.G1R)), "two landmarks that agree");
+        assertEquals(-1, two.pose().x(), 0.02);
+    }
+
+    /**
+     * The price of following a move at once: a wrong frame whose landmarks all agree with a far pose is taken
+     * too, and the next good frame takes the belief back (both are one frame). With a wrong camera pose the
+     * landmarks do not agree (the test above); no such frame is in the recordings (localization/README.md).
+     */
+    @Test
+    void aWrongButConsistentFrameIsUndoneByTheNextGoodOne() {
+        Pose2 a = new Pose2(-4, 1, 0), wrong = new Pose2(3, -2, 20);
+        EkfPoseFilter f = converged(a);
+        assertTrue(f.update(wrong, see(wrong, new Random(1), 0.01, FOUR)));
+        assertEquals(3, f.pose().x(), 0.02);
+        assertTrue(f.update(a, see(a, new Random(2), 0.01, FOUR)));
+        assertEquals(-4, f.pose().x(), 0.02);
+        assertEquals(3, f.starts());
+    }
+
+    @Test
+    void theSingleFrameRuleCanBeTurnedOff() {
+        Pose2 a = new Pose2(-4, 1, 0), b = new Pose2(3, -2, 20);
+        EkfPoseFilter f = converged(a, FRAMES_ONLY);
+        assertFalse(f.update(b, see(b, new Random(5), 0.01, FOUR)));
         assertEquals(-4, f.pose().x(), 0.02);
     }
 }

@@ -165,4 +165,28 @@ class LocalizationFilterTest {
         assertTrue(f.add(new Vector2(4, 0)));
         assertEquals(2, f.starts(), "a new belief after the queue emptied counts as a start");
     }
+
+    /** Issue 19: a far estimate flagged consistent (every landmark of its frame fits it) replaces the queue at once. */
+    @Test
+    void aConsistentFarEstimateRelocatesAtOnce() {
+        LocalizationFilter f = relocating();
+        for (int i = 0; i < 10; i++) f.add(new Pose2(-1, -4, 90));
+        assertTrue(f.add(new Pose2(3.02, -4, 90), true));
+        assertEquals(3.02, f.pose().x(), 1e-9);
+        assertEquals(1, f.size());
+        assertEquals(2, f.starts());
+        assertEquals(1, f.relocations());
+        assertEquals(0, f.pending());
+        assertTrue(f.add(new Pose2(2.98, -4, 90), true), "an agreeing one is queued as before");
+        assertEquals(2, f.size());
+        assertEquals(1, f.relocations());
+    }
+
+    @Test
+    void aConsistentEstimateChangesNothingWithoutRelocation() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15);
+        for (int i = 0; i < 10; i++) f.add(new Pose2(0, 0, 0));
+        assertFalse(f.add(new Pose2(4, 0, 0), true), "the thesis's filter: refused");
+        assertEquals(0, f.relocations());
+    }
 }

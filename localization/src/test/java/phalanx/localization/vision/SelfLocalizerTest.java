@@ -91,4 +91,25 @@ class SelfLocalizerTest {
         assertNull(s.pair(new LandmarkSighting(Landmark.F1R, new Vector2(a.x(), a.y()), new Vector2(3, 0)),
                 new LandmarkSighting(Landmark.F2R, new Vector2(b.x(), b.y()), new Vector2(0, 3))));
     }
+
+    /** Issue 19: the check that lets one frame re-initialise the self belief. */
+    @Test
+    void consistentWhenEveryLandmarkFitsTheFix() {
+        Pose2 truth = new Pose2(-5, 2, 30);
+        SelfLocalizer s = new SelfLocalizer(field, LocalizationConfig.DEFAULT);
+        List<LandmarkSighting> four = new ArrayList<>(List.of(seen(truth, Landmark.F1R, Side.LEFT), seen(truth, Landmark.G1R, Side.LEFT),
+                seen(truth, Landmark.G2R, Side.LEFT), seen(truth, Landmark.F2R, Side.LEFT)));
+        Pose2 fix = s.locate(four);
+        assertTrue(SelfLocalizer.consistent(fix, four, 0.1, 0.02));
+        assertTrue(SelfLocalizer.consistent(new Pose2(-5.05, 2.03, 30.1), four, 0.1, 0.02), "a few cm off still fits");
+        assertFalse(SelfLocalizer.consistent(new Pose2(-4, 2, 30), four, 0.1, 0.02), "1 m off does not");
+        assertFalse(SelfLocalizer.consistent(new Pose2(-5, 2, 35), four, 0.1, 0.02), "5 degrees off at 14-16 m does not");
+        // One landmark 1 m off where it should be (a wrong distance): the frame's landmarks disagree.
+        LandmarkSighting g = four.get(2);
+        four.set(2, new LandmarkSighting(g.landmark(), g.position(), g.relative().plus(new Vector2(1.0, 0))));
+        assertFalse(SelfLocalizer.consistent(s.locate(four), four, 0.1, 0.02));
+        assertFalse(SelfLocalizer.consistent(truth, four.subList(0, 1), 0.1, 0.02), "one landmark proves nothing");
+        assertFalse(SelfLocalizer.consistent(null, four, 0.1, 0.02));
+        assertFalse(SelfLocalizer.consistent(truth, four.subList(0, 2), Double.NaN, Double.NaN), "NaN: off");
+    }
 }
