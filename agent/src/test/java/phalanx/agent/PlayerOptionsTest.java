@@ -26,6 +26,8 @@ class PlayerOptionsTest {
         assertTrue(PlayerOptions.parse("--server", "mj").mj());
         assertTrue(PlayerConfig.of(d).agent().approach().enabled(), "the omnidirectional approach by default");
         assertFalse(PlayerConfig.of(PlayerOptions.parse("--approach", "thesis")).agent().approach().enabled(), "4.6.2's Walk To Ball");
+        assertTrue(PlayerConfig.of(d).agent().kickOff().enabled(), "the one-touch kick-off by default");
+        assertFalse(PlayerConfig.of(PlayerOptions.parse("--kick-off", "kick")).agent().kickOff().enabled(), "the old kick-off kick");
     }
 
     @Test
@@ -39,6 +41,7 @@ class PlayerOptionsTest {
         assertBad("--team must be", "--team", "two words");
         assertBad("--server must be simspark or mj, got 'mujoco'", "--server", "mujoco");
         assertBad("--approach must be omni or thesis, got 'fast'", "--approach", "fast");
+        assertBad("--kick-off must be tap or kick, got 'shoot'", "--kick-off", "shoot");
         assertBad("unknown flag --speed", "--speed", "3");
         assertBad("--host needs a value", "--host");
         assertBad("unexpected argument 'foo'", "foo");

@@ -48,6 +48,18 @@ class PerceptionParserTest {
     }
 
     @Test
+    void splForkGameStateFieldsAreSkipped() throws Exception {
+        // as the SimSpark-SPL snapshot (0.7.3-naoth-7) sent it in a match, garbage seconds included (docs/protocol.md)
+        Perception p = parser.parse("(time (now 6.700))(GS (unum 1) (team right) (sl 0) (sr 2) (t 0.000) (pm BeforeKickOff) (k left)"
+                + " (ti ((1 penalty_none 0.000) (3 penalty_none 1125867625040495008284672.000)) ((1 penalty_none 0.000))))"
+                + "(HJ (n hj1) (ax -0.000))");
+        assertEquals(PlayMode.BEFORE_KICK_OFF, p.gameState().playMode());
+        assertEquals(1, p.gameState().unum());
+        assertEquals(2, p.gameState().scoreRight());
+        assertEquals(0.0, p.joints().degrees(Joint.HJ1), 1e-12);
+    }
+
+    @Test
     void unknownPlayModeKeepsItsName() throws Exception {
         Perception p = parser.parse("(GS (t 0) (pm penalty_kick_left))");
         assertEquals(PlayMode.UNKNOWN, p.gameState().playMode());
