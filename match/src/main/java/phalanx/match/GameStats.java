@@ -43,11 +43,15 @@ public final class GameStats {
     static final double FIELD_HALF_LENGTH = 15, GOAL_HALF_WIDTH = 1.05, THIRD_X = 5;
     /** A shot on goal ends in the goal or within this of the goal line, having been aimed between the posts. */
     static final double SHOT_END_M = 2.0;
+    /** A free kick for the other side this soon after a kick-off turned into PlayOn is the taker's second touch. */
+    static final double KICK_OFF_FOUL_S = 1.0;
 
     /** One team's figures. Times in seconds of game time. */
     public static final class TeamStats {
         public String name;
         public int goals, kicks, kicksOver8m, kicksUnder1_5m, shotsOnGoal, falls, relocated;
+        /** This team's kick-offs, and those of them the other side got a free kick from (docs/protocol.md, "Set pieces"). */
+        public int kickOffs, kickOffFouls;
         public double possessionS, ownThirdS, middleS, opponentThirdS, lyingS;
         /** Set pieces awarded to this team, by play mode (free kicks count the other side's fouls). */
         public final Map<String, Integer> setPieces = new HashMap<>();
@@ -66,6 +70,8 @@ public final class GameStats {
     private final double[][][] lastTorso = new double[2][12][];   // side, unum: {x, y, upZ}
     private Kick kick;                                            // the kick in flight, or null
     private PlayMode lastMode = PlayMode.BEFORE_KICK_OFF;
+    private Side kickOffTeam;                                     // whose kick-off the current PlayOn came from
+    private double kickOffPlayOnAt = Double.NaN;
     private double playOnS;
     private long messages, unreadable;
     final double[][] ballCells = new double[30][20];              // PlayOn seconds per 1 m cell, for the heat map
@@ -106,8 +112,8 @@ public final class GameStats {
         if (state.teamLeft() != null) teams.get(Side.LEFT).name = state.teamLeft();
         if (state.teamRight() != null) teams.get(Side.RIGHT).name = state.teamRight();
         PlayMode mode = state.playMode();
-        if (mode != lastMode) modeChanged(mode);
         double t = state.time();
+        if (mode != lastMode) modeChanged(mode, t);
         double[] ball = scene.ball();
         if (!scene.hasScene() || ball == null || !Double.isFinite(t)) return;
         double dt = Double.isFinite(lastTime) ? t - lastTime : 0;
@@ -118,10 +124,22 @@ public final class GameStats {
         }
     }
 
-    private void modeChanged(PlayMode mode) {
+    private void modeChanged(PlayMode mode, double t) {
         endKick(lastBall);
+        PlayMode before = lastMode;
         lastMode = mode;
         Side owner = mode.owner();
+        boolean kickOff = mode == PlayMode.KICK_OFF_LEFT || mode == PlayMode.KICK_OFF_RIGHT;
+        if (kickOff && owner != null) teams.get(owner).kickOffs++;
+        if (mode == PlayMode.PLAY_ON && (before == PlayMode.KICK_OFF_LEFT || before == PlayMode.KICK_OFF_RIGHT)) {
+            kickOffTeam = before.owner();
+            kickOffPlayOnAt = t;
+        } else {
+            boolean freeKick = mode == PlayMode.FREE_KICK_LEFT || mode == PlayMode.FREE_KICK_RIGHT;
+            if (freeKick && kickOffTeam != null && owner != kickOffTeam && t - kickOffPlayOnAt <= KICK_OFF_FOUL_S)
+                teams.get(kickOffTeam).kickOffFouls++;
+            kickOffTeam = null;
+        }
         String kind = switch (mode) {
             case FREE_KICK_LEFT, FREE_KICK_RIGHT -> "free_kick";
             case DIRECT_FREE_KICK_LEFT, DIRECT_FREE_KICK_RIGHT -> "direct_free_kick";
@@ -221,11 +239,11 @@ public final class GameStats {
         return String.format(Locale.ROOT, "game-stats side=%s team=%s goals=%d shots_on_goal=%d kicks=%d kicks_over_8m=%d"
                         + " kicks_under_1_5m=%d possession=%.3f ball_own_third=%.3f ball_middle=%.3f ball_opponent_third=%.3f"
                         + " falls=%d lying_s=%.1f relocated=%d free_kicks=%d direct_free_kicks=%d kick_ins=%d corners=%d"
-                        + " goal_kicks=%d offsides=%d play_on_s=%.1f",
+                        + " goal_kicks=%d offsides=%d kick_offs=%d kick_off_fouls=%d play_on_s=%.1f",
                 side == Side.LEFT ? "left" : "right", t.name == null ? "?" : t.name, t.goals, t.shotsOnGoal, t.kicks,
                 t.kicksOver8m, t.kicksUnder1_5m, t.possessionS / p, t.ownThirdS / p, t.middleS / p, t.opponentThirdS / p,
                 t.falls, t.lyingS, t.relocated, t.setPiece("free_kick"), t.setPiece("direct_free_kick"), t.setPiece("kick_in"),
-                t.setPiece("corner"), t.setPiece("goal_kick"), t.setPiece("offside"), playOnS);
+                t.setPiece("corner"), t.setPiece("goal_kick"), t.setPiece("offside"), t.kickOffs, t.kickOffFouls, playOnS);
     }
 
     /** A ball heat map over the PlayOn time: the field in 1 m cells, darker where the ball spent longer. */

@@ -68,6 +68,27 @@ class GameStatsTest {
     }
 
     @Test
+    void aFreeKickRightAfterOurKickOffIsTheTakersFoulAndOneLaterIsNot() {
+        final int KICK_OFF_LEFT = 1, FREE_KICK_RIGHT = 16;
+        GameStats g = new GameStats(11);
+        // as in g17f (docs/matches.md, sessions 12-13): PlayOn at 2.68 s, free_kick_right at 2.80 s
+        g.accept(scene(0.04, KICK_OFF_LEFT, 0, 0, -0.3, 0, false));
+        g.accept(scene(2.68, PLAY_ON, 0.05, 0, -0.3, 0, false));
+        g.accept(scene(2.80, FREE_KICK_RIGHT, 0.05, 0, -0.3, 0, false));
+        g.accept(scene(9.60, PLAY_ON, 0.05, 0, -0.3, 0, false));
+        // the second kick-off is played on; the free kick 5 s later is another foul, not the taker's
+        g.accept(scene(20.0, KICK_OFF_LEFT, 0, 0, -0.3, 0, false));
+        g.accept(scene(22.0, PLAY_ON, 0.05, 0, -0.3, 0, false));
+        g.accept(scene(27.0, FREE_KICK_RIGHT, 0.05, 0, -0.3, 0, false));
+        GameStats.TeamStats us = g.team(Side.LEFT), them = g.team(Side.RIGHT);
+        assertEquals(2, us.kickOffs);
+        assertEquals(1, us.kickOffFouls, g.line(Side.LEFT));
+        assertEquals(2, them.setPiece("free_kick"));
+        assertEquals(0, them.kickOffs + them.kickOffFouls);
+        assertTrue(g.line(Side.LEFT).contains(" kick_offs=2 kick_off_fouls=1 "), g.line(Side.LEFT));
+    }
+
+    @Test
     void aLineThatIsNoMonitorMessageIsSkippedAndCounted() {
         GameStats g = new GameStats(11);
         g.accept(scene(0, PLAY_ON, 0, 0, 1, 1, false));
