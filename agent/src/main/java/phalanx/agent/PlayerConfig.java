@@ -33,6 +33,6 @@ public record PlayerConfig(FieldSpec field, NaoModel body, LocalizationConfig lo
                 ChannelConfig.DEFAULT.withPlayers(o.players()), CoordinationConfig.THESIS,
                 agent.withKick(agent.kick().withDribbleWithin(o.dribbleWithin()))
                         .withApproach(o.thesisApproach() ? AgentConfig.Approach.THESIS : agent.approach())
-                        .withKickOff(o.kickOffKick() ? AgentConfig.KickOff.OFF : agent.kickOff()));
+                        .withKickOff(o.kickOffKick() ? agent.kickOff() : AgentConfig.KickOff.TAP));
     }
 }

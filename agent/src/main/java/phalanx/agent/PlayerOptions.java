@@ -27,8 +27,8 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                              0: always kick, the thesis; 100: always dribble)
               --approach A   omni (default: the omnidirectional walk to the spot behind the ball, facing the goal;
                              AgentConfig.Approach) or thesis (4.6.2: Walk To Ball, then the align orbit)
-              --kick-off K   tap (default: in our kick-off player 10 taps the ball and player 9 plays it;
-                             AgentConfig.KickOff) or kick (On Ball as in any mode: the taker's second touch is a foul)
+              --kick-off K   kick (default: On Ball as in any mode; on an empty field the taker's second touch
+                             is a foul) or tap (player 10 taps the ball and player 9 plays it; AgentConfig.KickOff.TAP)
               --server S     simspark (default: rcssserver3d, a Nao) or mj (rcssservermj, a Booster T1; 7 players,
                              --unum 1-7; docs/rcssservermj.md)""";
 
@@ -47,7 +47,7 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
         String roboviz = null;
         boolean still = false;
         int dribbleWithin = o.dribbleWithin;
-        boolean mj = false, thesisApproach = false, kickOffKick = false;
+        boolean mj = false, thesisApproach = false, kickOffKick = true;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("-h") || flag.equals("--help")) throw new IllegalArgumentException("help");

@@ -13,7 +13,7 @@ class BeamPolicyTest {
 
     @Test
     void theKickOffPartnerBeamsBesideTheBallAndTheOthersToTheirFormationSpots() {
-        AgentConfig.KickOff k = AgentConfig.KickOff.DEFAULT;
+        AgentConfig.KickOff k = AgentConfig.KickOff.TAP;
         BeamPolicy with = new BeamPolicy(FIELD, CoordinationConfig.THESIS, k);
         BeamPolicy without = new BeamPolicy(FIELD, CoordinationConfig.THESIS, AgentConfig.KickOff.OFF);
         Pose2 partner = with.beam(PlayMode.BEFORE_KICK_OFF, 0, k.partner());

@@ -26,8 +26,8 @@ class PlayerOptionsTest {
         assertTrue(PlayerOptions.parse("--server", "mj").mj());
         assertTrue(PlayerConfig.of(d).agent().approach().enabled(), "the omnidirectional approach by default");
         assertFalse(PlayerConfig.of(PlayerOptions.parse("--approach", "thesis")).agent().approach().enabled(), "4.6.2's Walk To Ball");
-        assertTrue(PlayerConfig.of(d).agent().kickOff().enabled(), "the one-touch kick-off by default");
-        assertFalse(PlayerConfig.of(PlayerOptions.parse("--kick-off", "kick")).agent().kickOff().enabled(), "the old kick-off kick");
+        assertFalse(PlayerConfig.of(d).agent().kickOff().enabled(), "the kick-off kick by default (docs/matches.md, sessions 12-13)");
+        assertTrue(PlayerConfig.of(PlayerOptions.parse("--kick-off", "tap")).agent().kickOff().enabled(), "the tap");
     }
 
     @Test

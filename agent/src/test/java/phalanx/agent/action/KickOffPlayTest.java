@@ -13,7 +13,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 /** Our kick-off: the taker taps, the partner plays the ball, and both go back to the usual choice after. */
 class KickOffPlayTest {
-    private static final AgentConfig C = AgentConfig.DEFAULT;
+    private static final AgentConfig C = AgentConfig.DEFAULT.withKickOff(AgentConfig.KickOff.TAP);
     private static final int TAKER = C.kickOff().taker(), PARTNER = C.kickOff().partner();
 
     /** A left-side player at (x, y) facing the goal, the ball on the centre spot, at game time t. */
