@@ -129,9 +129,8 @@ public final class GameStats {
         PlayMode before = lastMode;
         lastMode = mode;
         Side owner = mode.owner();
-        boolean kickOff = mode == PlayMode.KICK_OFF_LEFT || mode == PlayMode.KICK_OFF_RIGHT;
-        if (kickOff && owner != null) teams.get(owner).kickOffs++;
-        if (mode == PlayMode.PLAY_ON && (before == PlayMode.KICK_OFF_LEFT || before == PlayMode.KICK_OFF_RIGHT)) {
+        if (isKickOff(mode) && owner != null) teams.get(owner).kickOffs++;
+        if (mode == PlayMode.PLAY_ON && isKickOff(before)) {
             kickOffTeam = before.owner();
             kickOffPlayOnAt = t;
         } else {
@@ -151,6 +150,8 @@ public final class GameStats {
         };
         if (kind != null && owner != null) teams.get(owner).setPieces.merge(kind, 1, Integer::sum);
     }
+
+    private static boolean isKickOff(PlayMode m) { return m == PlayMode.KICK_OFF_LEFT || m == PlayMode.KICK_OFF_RIGHT; }
 
     private void step(PlayMode mode, double dt, double[] ball) {
         boolean playOn = mode == PlayMode.PLAY_ON;
