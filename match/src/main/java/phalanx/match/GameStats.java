@@ -45,6 +45,8 @@ public final class GameStats {
     static final double SHOT_END_M = 2.0;
     /** A free kick for the other side this soon after a kick-off turned into PlayOn is the taker's second touch. */
     static final double KICK_OFF_FOUL_S = 1.0;
+    /** A goal's shot is a kick that started at most this long before it (a 10 m roll at the slowest kick's speed). */
+    static final double GOAL_SHOT_S = 10.0;
 
     /** One team's figures. Times in seconds of game time. */
     public static final class TeamStats {
@@ -76,15 +78,34 @@ public final class GameStats {
     private long messages, unreadable;
     final double[][] ballCells = new double[30][20];              // PlayOn seconds per 1 m cell, for the heat map
 
-    private record Kick(Side team, double t0, double x0, double y0, double dx, double dy) {}
+    private record Kick(Side team, double t0, double x0, double y0, double dx, double dy, Defence defence) {}
 
-    /** One kick as counted: game time, team, from and to (field frame), length. */
-    public record KickEvent(double time, Side team, double x0, double y0, double x1, double y1, double length, boolean onGoal) {}
+    /** One kick as counted: game time, team, from and to (field frame), length; the other side as it stood when it left. */
+    public record KickEvent(double time, Side team, double x0, double y0, double x1, double y1, double length, boolean onGoal,
+                            Defence defence) {}
+
+    /**
+     * The defending side at one moment: its player 1 (the keeper; null when not on the field) as {x, y, upZ},
+     * and its torso nearest the ball, metres.
+     */
+    public record Defence(double[] keeper, double nearest) {
+        public boolean keeperLying() { return keeper != null && keeper[2] < LYING_UP_Z; }
+    }
+
+    /**
+     * A goal: game time, the scoring side, its shot (the last kick of the scorer that ended at the goal, null when
+     * the ball was walked in) and the defence when the ball went in.
+     */
+    public record Goal(double time, Side scorer, KickEvent shot, Defence atGoal) {}
 
     private final java.util.List<KickEvent> kickEvents = new java.util.ArrayList<>();
+    private final java.util.List<Goal> goalEvents = new java.util.ArrayList<>();
 
     /** Every kick counted, in order. */
     public java.util.List<KickEvent> kicks() { return java.util.List.copyOf(kickEvents); }
+
+    /** Every goal, in order. */
+    public java.util.List<Goal> goals() { return java.util.List.copyOf(goalEvents); }
 
     public GameStats(int players) {
         this.players = players;
@@ -107,13 +128,13 @@ public final class GameStats {
             unreadable++;
             return;
         }
-        teams.get(Side.LEFT).goals = state.scoreLeft();
-        teams.get(Side.RIGHT).goals = state.scoreRight();
         if (state.teamLeft() != null) teams.get(Side.LEFT).name = state.teamLeft();
         if (state.teamRight() != null) teams.get(Side.RIGHT).name = state.teamRight();
         PlayMode mode = state.playMode();
         double t = state.time();
         if (mode != lastMode) modeChanged(mode, t);
+        scored(Side.LEFT, state.scoreLeft(), t);
+        scored(Side.RIGHT, state.scoreRight(), t);
         double[] ball = scene.ball();
         if (!scene.hasScene() || ball == null || !Double.isFinite(t)) return;
         double dt = Double.isFinite(lastTime) ? t - lastTime : 0;
@@ -149,6 +170,30 @@ public final class GameStats {
             default -> null;
         };
         if (kind != null && owner != null) teams.get(owner).setPieces.merge(kind, 1, Integer::sum);
+    }
+
+    /** A new goal of this side: its shot is its last kick if that ended at the other side's goal line. */
+    private void scored(Side side, int score, double t) {
+        TeamStats ts = teams.get(side);
+        if (score <= ts.goals) return;
+        ts.goals = score;
+        endKick(lastBall);                                // the ball went in while still rolling
+        KickEvent shot = null;
+        for (int i = kickEvents.size() - 1; i >= 0 && shot == null; i--) {
+            KickEvent k = kickEvents.get(i);
+            if (t - k.time() > GOAL_SHOT_S) break;
+            if (k.team() == side && Math.abs(k.x1()) >= FIELD_HALF_LENGTH - SHOT_END_M) shot = k;
+        }
+        goalEvents.add(new Goal(t, side, shot, defence(side == Side.LEFT ? Side.RIGHT : Side.LEFT, lastBall)));
+    }
+
+    private Defence defence(Side side, double[] ball) {
+        double[][] torsos = lastTorso[side.ordinal()];
+        double nearest = Double.POSITIVE_INFINITY;
+        for (int u = 1; u <= players && ball != null; u++) {
+            if (torsos[u] != null) nearest = Math.min(nearest, Math.hypot(torsos[u][0] - ball[0], torsos[u][1] - ball[1]));
+        }
+        return new Defence(torsos[1] == null ? null : torsos[1].clone(), nearest);
     }
 
     private static boolean isKickOff(PlayMode m) { return m == PlayMode.KICK_OFF_LEFT || m == PlayMode.KICK_OFF_RIGHT; }
@@ -192,7 +237,8 @@ public final class GameStats {
             kick = null;                                  // placed, not kicked
         } else if (kick == null && lastBallSpeed < REST_SPEED && speed > KICK_SPEED) {
             Side kicker = kicker(lastBall);
-            if (kicker != null) kick = new Kick(kicker, lastTime, lastBall[0], lastBall[1], ball[0] - lastBall[0], ball[1] - lastBall[1]);
+            if (kicker != null) kick = new Kick(kicker, lastTime, lastBall[0], lastBall[1], ball[0] - lastBall[0], ball[1] - lastBall[1],
+                    defence(kicker == Side.LEFT ? Side.RIGHT : Side.LEFT, lastBall));
         } else if (kick != null && speed < STOP_SPEED) {
             endKick(ball);
         }
@@ -230,7 +276,7 @@ public final class GameStats {
             onGoal = Math.abs(yAtLine) <= GOAL_HALF_WIDTH && Math.abs(goalX - end[0]) <= SHOT_END_M;
         }
         if (onGoal) ts.shotsOnGoal++;
-        kickEvents.add(new KickEvent(k.t0(), k.team(), k.x0(), k.y0(), end[0], end[1], dist, onGoal));
+        kickEvents.add(new KickEvent(k.t0(), k.team(), k.x0(), k.y0(), end[0], end[1], dist, onGoal, k.defence()));
     }
 
     /** The machine-readable line of one team. */
@@ -269,6 +315,21 @@ public final class GameStats {
         return b.append("</svg>\n").toString();
     }
 
+    /** One goal as a line: who scored when, the shot and where the defending keeper and nearest defender were. */
+    static String describe(Goal g) {
+        String side = g.scorer() == Side.LEFT ? "left" : "right";
+        KickEvent k = g.shot();
+        String shot = k == null ? "walked in" : String.format(Locale.ROOT, "shot t=%.2f from (%.2f,%.2f) %.2f m to the line, %s",
+                k.time(), k.x0(), k.y0(), FIELD_HALF_LENGTH - Math.abs(k.x0()), defence("at the shot", k.defence()));
+        return String.format(Locale.ROOT, "goal t=%.2f %s: %s; %s", g.time(), side, shot, defence("at the goal", g.atGoal()));
+    }
+
+    private static String defence(String when, Defence d) {
+        String keeper = d.keeper() == null ? "no keeper" : String.format(Locale.ROOT, "keeper (%.2f,%.2f)%s",
+                d.keeper()[0], d.keeper()[1], d.keeperLying() ? " lying" : "");
+        return String.format(Locale.ROOT, "%s %s, nearest defender %.2f m", when, keeper, d.nearest());
+    }
+
     private static String esc(String s) {
         return s == null ? "?" : s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
     }
@@ -285,19 +346,21 @@ public final class GameStats {
     }
 
     static final String USAGE = """
-            usage: scripts/phalanx stats game MONITOR_LOG [--svg OUT.svg] [--kicks] [--players 11]
+            usage: scripts/phalanx stats game MONITOR_LOG [--svg OUT.svg] [--kicks] [--goals] [--players 11]
               MONITOR_LOG is a match's monitor.log.gz (scripts/phalanx match records one per match) or any
               monitor stream saved one message a line; prints one game-stats line per team;
-              --kicks also lists every kick (time, team, from, to, length)""";
+              --kicks also lists every kick (time, team, from, to, length);
+              --goals every goal: its shot (from where, how long, the defence when it left) or walked in""";
 
     public static void main(String[] argv) {
         Path log = null, svg = null;
         int players = 11;
-        boolean listKicks = false;
+        boolean listKicks = false, listGoals = false;
         try {
-            for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of("--kicks"))) {
+            for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of("--kicks", "--goals"))) {
                 switch (p[0]) {
                     case "--kicks" -> listKicks = true;
+                    case "--goals" -> listGoals = true;
                     case "--svg" -> svg = Path.of(p[1]);
                     case "--players" -> players = (int) Flags.number(p[0], p[1], 1, 11, true);
                     default -> throw Flags.unknown(p[0], USAGE);
@@ -325,6 +388,7 @@ public final class GameStats {
                             k.team() == Side.LEFT ? "left" : "right", k.x0(), k.y0(), k.x1(), k.y1(), k.length(), k.onGoal() ? " on goal" : ""));
                 }
             }
+            if (listGoals) for (Goal goal : g.goals()) System.out.println(describe(goal));
             if (g.unreadable() > 0) System.err.println("game-stats: " + g.unreadable() + " of " + g.messages() + " lines were not monitor messages and were skipped");
             if (svg != null) {
                 Files.writeString(svg, g.svg());

@@ -18,11 +18,15 @@ class GameStatsTest {
 
     /** A full scene: the ball and player 1 of the left team, upright or lying on its back. */
     private static String scene(double t, int mode, double bx, double by, double px, double py, boolean lying) {
+        return scene(t, mode, 0, bx, by, px, py, lying);
+    }
+
+    private static String scene(double t, int mode, int scoreLeft, double bx, double by, double px, double py, boolean lying) {
         String torso = lying ? "1 0 0 0 0 0 1 0 0 -1 0 0" : "1 0 0 0 0 1 0 0 0 0 1 0";
-        return String.format(Locale.ROOT, "(%s(time %.2f)(half 1)(score_left 0)(score_right 0)(play_mode %d))(RSG 0 1)("
+        return String.format(Locale.ROOT, "(%s(time %.2f)(half 1)(score_left %d)(score_right 0)(play_mode %d))(RSG 0 1)("
                         + "(nd TRF (SLT 1 0 0 0 0 1 0 0 0 0 1 0 %.3f %.3f 0.042 1)(nd StaticMesh (load models/soccerball.obj)))"
                         + "(nd TRF (SLT %s %.3f %.3f 0.38 1)(nd TRF (nd StaticMesh (load models/naobody.obj) (resetMaterials matLeft matNum1)))))",
-                MODES, t, mode, bx, by, torso, px, py);
+                MODES, t, scoreLeft, mode, bx, by, torso, px, py);
     }
 
     @Test
@@ -86,6 +90,33 @@ class GameStatsTest {
         assertEquals(2, them.setPiece("free_kick"));
         assertEquals(0, them.kickOffs + them.kickOffFouls);
         assertTrue(g.line(Side.LEFT).contains(" kick_offs=2 kick_off_fouls=1 "), g.line(Side.LEFT));
+    }
+
+    @Test
+    void aGoalIsListedWithItsShotOrAsWalkedIn() {
+        final int GOAL_LEFT = 13;
+        GameStats g = new GameStats(11);
+        double t = 0;
+        // kicked from (12, 0.5) at 4 m/s into the right goal; the score goes up when it is in (no right team: no keeper)
+        for (int i = 0; i <= 10; i++, t += 0.04) g.accept(scene(t, PLAY_ON, 12, 0.5, 11.8, 0.5, false));
+        double x = 12;
+        while (x < 15.2) { x += 0.16; g.accept(scene(t, PLAY_ON, x, 0.5, 11.8, 0.5, false)); t += 0.04; }
+        g.accept(scene(t, GOAL_LEFT, 1, 15.3, 0.5, 11.8, 0.5, false));
+        assertEquals(1, g.goals().size());
+        GameStats.Goal goal = g.goals().get(0);
+        assertEquals(Side.LEFT, goal.scorer());
+        assertNotNull(goal.shot(), "the kick that went in is the shot");
+        assertEquals(12, goal.shot().x0(), 1e-9);
+        assertNull(goal.shot().defence().keeper(), "the right team has no player 1 on the field");
+        String line = GameStats.describe(goal);
+        assertTrue(line.startsWith("goal t=") && line.contains(" left: shot t=0.40 from (12.00,0.50) 3.00 m to the line"), line);
+        // the second goal: the ball walked in at 0.5 m/s (no kick), scored 20 s later
+        t += 20;
+        for (x = 14; x < 15.2; x += 0.02, t += 0.04) g.accept(scene(t, PLAY_ON, 1, x, 0, x - 0.2, 0, false));
+        g.accept(scene(t, GOAL_LEFT, 2, 15.3, 0, 15.1, 0, false));
+        assertEquals(2, g.goals().size());
+        assertNull(g.goals().get(1).shot());
+        assertTrue(GameStats.describe(g.goals().get(1)).contains("walked in"), GameStats.describe(g.goals().get(1)));
     }
 
     @Test
