@@ -203,16 +203,32 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          ends with the robot on the ground (motion/README.md): in the 6.3 test against
      *                          FC Portugal each Libero clearance left the keeper lying in front of an open goal
      *                          (docs/matches.md, scripts/phalanx keeper-test)
+     * @param challengeDepth    Challenge: the keeper leaves its spot for a ball this near our goal line ... (ours,
+     *                          issue 18: UT Austin Villa scored all its goals from 0.3-3.7 m, the keeper standing
+     *                          on its line; docs/matches.md, sessions 14). 0: never
+     * @param challengeWidth    ... and at most this far from the goal's middle line, m
+     * @param challengeExit     it goes back to its spot once the ball is this much beyond that box, m
+     * @param challengePush     it walks to the point this far past the ball on the line from the goal's centre,
+     *                          so it meets the ball from the goal's side and pushes it away (no kick: ours end on
+     *                          the ground, see libero), m
      */
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,
                          double liberoExitMargin, double liberoMaxSpeed, double shotSpeed, double dribbleDistance,
-                         double minDiveDistance, double maxShift, double shiftTolerance, boolean libero) {
+                         double minDiveDistance, double maxShift, double shiftTolerance, boolean libero,
+                         double challengeDepth, double challengeWidth, double challengeExit, double challengePush) {
         public static final Keeper DEFAULT = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
-                1.0, 0.6, 0.5, 0.5, 0.15, false);
-        /** The thesis's keeper: Libero on, the middle of the goal, a dive for any approaching ball. */
+                1.0, 0.6, 0.5, 0.5, 0.15, false, 3.0, 2.5, 0.7, 0.3);
+        /** The thesis's keeper: Libero on, the middle of the goal, a dive for any approaching ball, no challenge. */
         public static final Keeper THESIS = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
-                0.2, 0.6, 0.0, 0.0, 0.15, true);
+                0.2, 0.6, 0.0, 0.0, 0.15, true, 0.0, 2.5, 0.7, 0.3);
+
+        /** The keeper as it was before Challenge (docs/matches.md, session 14), for games that judge it. */
+        public Keeper withoutChallenge() {
+            return new Keeper(spotOffset, diveSeconds, postMargin, bodyBlock, ballDecay, minApproachSpeed, relocalizeDistance,
+                    liberoClearance, liberoExitMargin, liberoMaxSpeed, shotSpeed, dribbleDistance, minDiveDistance, maxShift,
+                    shiftTolerance, libero, 0.0, challengeWidth, challengeExit, challengePush);
+        }
     }
 
     /**

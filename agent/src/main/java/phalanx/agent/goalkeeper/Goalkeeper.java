@@ -25,21 +25,25 @@ import java.util.List;
  *           dive when it will cross the goal mouth                           -> DIVING
  *           within the dive time; ball (still) in the goal area, nobody near -> LIBERO
  *           pushed off the spot (and no shot coming)                         -> LOCALIZE
+ *           ball within challengeDepth of our goal line, in front of the goal -> CHALLENGE
  * LIBERO    On Ball: clear the ball out of the goal area                     -> LOCALIZE when cleared or lost
+ * CHALLENGE walk through the ball from the goal's side, pushing it away        -> LOCALIZE when out of the box
  * DIVING    the dive plays to its end (the behaviour stands up afterwards)   -> LOCALIZE
  * </pre>
  * Ours beyond the thesis: a shot is also dived for in LOCALIZE and LIBERO while near the spot;
  * Libero waits for a (nearly) still ball; DIVING is a state of its own so nothing interrupts the dive;
  * a ball pushed along by a nearby opponent is not dived for unless it is shot (AgentConfig.Keeper.shotSpeed);
- * Guard side-steps to keep on the line from the goal's centre to the ball (AgentConfig.Keeper.maxShift).
+ * Guard side-steps to keep on the line from the goal's centre to the ball (AgentConfig.Keeper.maxShift);
+ * Challenge (issue 18) comes out for a ball near the goal instead of waiting on the line for the shot.
  */
 public final class Goalkeeper implements Action {
-    public enum State { LOCALIZE, GUARD, LIBERO, DIVING }
+    public enum State { LOCALIZE, GUARD, LIBERO, DIVING, CHALLENGE }
 
     private final AgentConfig config;
     private final TrackMovingObject track;
     private final Dive dive;
     private WalkToCoordinate toSpot;
+    private WalkToCoordinate toBall;
     private OnBall libero;
     private State state = State.LOCALIZE;
     private boolean shifting;
@@ -65,6 +69,7 @@ public final class Goalkeeper implements Action {
             case GUARD -> guard(s);
             case LIBERO -> libero(s);
             case DIVING -> diving(s);
+            case CHALLENGE -> challenge(s);
         };
     }
 
@@ -73,6 +78,10 @@ public final class Goalkeeper implements Action {
         if (nearSpot(s)) {
             Decision d = tryDive(s);
             if (d != null) return d;
+        }
+        if (inChallengeBox(s, 0)) {
+            state = State.CHALLENGE;
+            return challenge(s);
         }
         if (walk.done(s)) {
             state = State.GUARD;
@@ -88,6 +97,10 @@ public final class Goalkeeper implements Action {
             state = State.LIBERO;
             libero = new OnBall(config);
             return libero.decide(s);
+        }
+        if (inChallengeBox(s, 0)) {
+            state = State.CHALLENGE;
+            return challenge(s);
         }
         if (!nearSpot(s)) {
             state = State.LOCALIZE;
@@ -129,6 +142,40 @@ public final class Goalkeeper implements Action {
             return walkToSpot(s).decide(s);
         }
         return libero.decide(s);
+    }
+
+    /**
+     * Challenge: to the point challengePush past the ball on the line from our goal's centre through it, facing
+     * along that line; a shot is still dived for. Back to Localize once the ball is out of the box by challengeExit.
+     */
+    private Decision challenge(Situation s) {
+        Decision d = tryDive(s);
+        if (d != null) { toBall = null; return d; }
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (ball == null || s.field() == null || !inChallengeBox(s, config.keeper().challengeExit())) {
+            state = State.LOCALIZE;
+            toBall = null;
+            return walkToSpot(s).decide(s);
+        }
+        Vector2 goal = new Vector2(-s.field().halfLength(), 0);
+        Vector2 out = ball.minus(goal);
+        double n = out.norm();
+        Vector2 u = n < 1e-6 ? new Vector2(1, 0) : new Vector2(out.x() / n, out.y() / n);
+        double push = config.keeper().challengePush();
+        double x = ball.x() + push * u.x(), y = ball.y() + push * u.y(), theta = u.angleDeg();
+        if (toBall == null) toBall = new WalkToCoordinate(config, x, y, theta);
+        else toBall.target(x, y, theta);
+        return Decision.of(toBall.decide(s).move(), track.head(s));
+    }
+
+    /** The ball (believed, field frame) in front of our goal line, within challengeDepth of it and challengeWidth of the middle, grown by a margin. */
+    private boolean inChallengeBox(Situation s, double margin) {
+        AgentConfig.Keeper k = config.keeper();
+        if (k.challengeDepth() <= 0 || s.field() == null) return false;
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (ball == null) return false;
+        double depth = ball.x() + s.field().halfLength();
+        return depth >= 0 && depth <= k.challengeDepth() + margin && Math.abs(ball.y()) <= k.challengeWidth() + margin;
     }
 
     private Decision diving(Situation s) {

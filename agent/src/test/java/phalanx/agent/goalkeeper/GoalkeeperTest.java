@@ -75,22 +75,22 @@ class GoalkeeperTest {
 
     @Test
     void guardSideStepsOntoTheLineFromTheGoalsCentreToTheBall() {
-        // Ball at (-12, -2): the line from the goal's centre (-15, 0) crosses x = -14.5 at y = -2 * 0.5 / 3 = -0.33,
-        // more than 0.15 m to the keeper's right: side-step right.
+        // Ball at (-11, -2.67), 4 m out (beyond Challenge's 3 m): the line from the goal's centre (-15, 0) crosses
+        // x = -14.5 at y = -2.67 * 0.5 / 4 = -0.33, more than 0.15 m to the keeper's right: side-step right.
         Goalkeeper k = guarding();
-        assertEquals(new Move.SideStep(false), k.decide(World.at(-14.5, 0, 0).ballAt(-12, -2).situation()).move());
+        assertEquals(new Move.SideStep(false), k.decide(World.at(-14.5, 0, 0).ballAt(-11, -2.67).situation()).move());
         // At y = -0.25 it is 0.08 m off: still stepping (it stops within 0.05 m) ...
-        assertEquals(new Move.SideStep(false), k.decide(World.at(-14.5, -0.25, 0).ballAt(-12, -2).situation()).move());
+        assertEquals(new Move.SideStep(false), k.decide(World.at(-14.5, -0.25, 0).ballAt(-11, -2.67).situation()).move());
         // ... and at -0.30 it stands; 0.10 m off (under the 0.15 m to start) it stays standing.
-        assertEquals(Move.STAND, k.decide(World.at(-14.5, -0.30, 0).ballAt(-12, -2).situation()).move());
-        assertEquals(Move.STAND, k.decide(World.at(-14.5, -0.23, 0).ballAt(-12, -2).situation()).move());
+        assertEquals(Move.STAND, k.decide(World.at(-14.5, -0.30, 0).ballAt(-11, -2.67).situation()).move());
+        assertEquals(Move.STAND, k.decide(World.at(-14.5, -0.23, 0).ballAt(-11, -2.67).situation()).move());
         // A ball far out on the wing: at most 0.5 m from the middle; the ball on the goal line beside the post too.
         assertEquals(new Move.SideStep(true), guarding().decide(World.at(-14.5, 0, 0).ballAt(-14.8, 3).situation()).move());
         Goalkeeper g = guarding();
         assertEquals(Move.STAND, g.decide(World.at(-14.5, 0.45, 0).ballAt(-10, 8).situation()).move(), "0.5 m cap");
         // The thesis's keeper keeps the middle.
         Goalkeeper t = guarding(C.withKeeper(AgentConfig.Keeper.THESIS));
-        assertEquals(Move.STAND, t.decide(World.at(-14.5, 0, 0).ballAt(-12, -2).situation()).move());
+        assertEquals(Move.STAND, t.decide(World.at(-14.5, 0, 0).ballAt(-11, -2.67).situation()).move());
     }
 
     private static void assertNoDive(World w) {
@@ -145,11 +145,43 @@ class GoalkeeperTest {
         Goalkeeper g = guarding(thesis);
         g.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).opponentAt(9, -13.2, 0.8).situation());
         assertEquals(Goalkeeper.State.GUARD, g.state());
-        // Our default while kicks end on the ground: no Libero, the keeper keeps its goal.
+        // Our default while kicks end on the ground: no Libero (it comes out to push the ball away instead, below).
         Goalkeeper d = guarding();
         d.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).situation());
-        assertEquals(Goalkeeper.State.GUARD, d.state());
+        assertNotEquals(Goalkeeper.State.LIBERO, d.state());
         assertFalse(d.hasBall());
+    }
+
+    @Test
+    void challengeWalksThroughABallNearTheGoalFromTheGoalsSideAndGoesBackOnceItIsOut() {
+        // Ball at (-13.5, 0.2): 1.5 m from the goal line, inside the 3 m box. The point 0.3 m past it on the line
+        // from (-15, 0), (-13.20, 0.24), is nearly straight ahead of the keeper at (-14.5, 0.1) facing +x (6 deg): walk.
+        Goalkeeper k = guarding();
+        Move m = k.decide(World.at(-14.5, 0.1, 0).ballAt(-13.5, 0.2).situation()).move();
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        assertTrue(m instanceof Move.Walk, m.toString());
+        assertFalse(k.hasBall(), "the field players keep playing the ball");
+        // Still inside the box plus its 0.7 m margin (3.5 m out): still challenging.
+        k.decide(World.at(-13.8, 0.3, 0).ballAt(-11.5, 0.5).situation());
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        // Pushed out beyond 3.7 m: back to the spot.
+        k.decide(World.at(-13.8, 0.3, 0).ballAt(-11, 0).situation());
+        assertEquals(Goalkeeper.State.LOCALIZE, k.state());
+        // A ball 4 m out, or wide of the box (y = 3 m), is left to the field players.
+        Goalkeeper g = guarding();
+        g.decide(World.at(-14.5, 0, 0).ballAt(-11, 0).situation());
+        assertEquals(Goalkeeper.State.GUARD, g.state());
+        g.decide(World.at(-14.5, 0, 0).ballAt(-13, 3).situation());
+        assertEquals(Goalkeeper.State.GUARD, g.state());
+        // The thesis's keeper does not come out (it goes Libero for a still ball in the goal area instead).
+        Goalkeeper t = guarding(C.withKeeper(AgentConfig.Keeper.THESIS));
+        t.decide(World.at(-14.5, 0, 0).ballAt(-12.8, 0.5).situation());
+        assertEquals(Goalkeeper.State.GUARD, t.state());
+        // A shot is still dived for while challenging.
+        Goalkeeper d = guarding();
+        d.decide(World.at(-14.5, 0, 0).ballAt(-13.5, 0.5).situation());
+        assertEquals(Goalkeeper.State.CHALLENGE, d.state());
+        assertEquals(new Move.Dive(true), d.decide(shot(1, 0.4, -3, 0.2).situation()).move());
     }
 
     @Test
