@@ -88,7 +88,11 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param dribbleWithin     in PlayOn, On Ball dribbles toward the goal instead of kicking while the ball is
      *                          nearer the opponent goal than this (ours; 0 = always kick, the thesis's Figure 4.14; the player's
      *                          --dribble-within sets 8 m by default, chosen in games: docs/matches.md session 10)
-     */
+     * @param pressureDistance  in PlayOn, at the ball with an opponent this near it, On Ball does not go round the ball
+     *                          to line up a kick but walks it on at once (ours, issue 18: at UT Austin Villa's goals our
+     *                          nearest player stood 0.3-0.7 m from the ball, lining up, while theirs kicked); 0 = never ...
+     * @param pressureMaxDeg    ... when its heading is within this of the direction to the opponent goal (otherwise the
+     *                          push would go toward our own goal)
     /**
      * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params
      * motions/strong_kick.xml`): a ball 1-2 cm nearer is struck earlier in the swing (its precursor went 6.6 m from 0.17 m
@@ -98,8 +102,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
 
     public record Kick(double spotX, double spotY, double strongSpotX, double strongSpotY, double toleranceX, double toleranceFarX, double toleranceY, double restartDistance,
                        double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
-                       double oneShotTimeout, double dribbleWithin) {
-        public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0);
+                       double oneShotTimeout, double dribbleWithin, double pressureDistance, double pressureMaxDeg) {
+        public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0,
+                1.0, 60);
 
         /**
          * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
@@ -119,12 +124,17 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         /** The same with another strong-kick spot (a robot type with its own strong_kick.xml). */
         public Kick withStrongSpot(double x, double y) {
             return new Kick(spotX, spotY, x, y, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg);
         }
 
         public Kick withDribbleWithin(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, metres);
+                    strongBeyond, oneShotTimeout, metres, pressureDistance, pressureMaxDeg);
+        }
+
+        public Kick withPressureDistance(double metres) {
+            return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
+                    strongBeyond, oneShotTimeout, dribbleWithin, metres, pressureMaxDeg);
         }
     }
 

@@ -56,6 +56,23 @@ public final class Facts {
                 && b.selfConfidence() >= c.beliefs().selfConfidence();
     }
 
+    /** True when an opponent seen within the player memory time is believed within {@code radius} of a field point. */
+    public static boolean opponentNear(Situation s, AgentConfig c, Vector2 point, double radius) {
+        WorldBelief b = s.belief();
+        return b != null && point != null && anyoneNear(b.opponents(), b.time(), point, radius, c);
+    }
+
+    /** True when one of these players, seen within the player memory time, is believed within {@code radius} of a point. */
+    public static boolean anyoneNear(java.util.List<phalanx.localization.belief.PlayerBelief> players, double now, Vector2 point,
+                                     double radius, AgentConfig c) {
+        if (players == null || point == null) return false;
+        for (phalanx.localization.belief.PlayerBelief p : players) {
+            if (p == null || p.global() == null || !(now - p.time() <= c.beliefs().playerMemorySeconds())) continue;
+            if (p.global().distanceTo(point) <= radius) return true;
+        }
+        return false;
+    }
+
     /** The fall state, STANDING when unknown. */
     public static FallState fall(Situation s) {
         WorldBelief b = s.belief();

@@ -18,6 +18,9 @@ import phalanx.model.field.Vector2;
  * a dribble touches the ball twice (docs/protocol.md, "Set pieces"). Ours too: with a self pose and
  * {@code AgentConfig.Approach.enabled}, the way to the ball is {@link ApproachBall} (to the spot behind
  * the ball, facing the goal, with the omnidirectional walk), so the align orbit has little left to do.
+ * Ours too (issue 18): at the ball in PlayOn with an opponent near it ({@code AgentConfig.Kick.pressureDistance}),
+ * and facing within pressureMaxDeg of the opponent goal, it walks the ball on along its heading at once
+ * instead of going round it and lining up a kick, which an opponent at the ball does not wait for.
  */
 public final class OnBall implements Action {
     public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK, DRIBBLE }
@@ -72,13 +75,14 @@ public final class OnBall implements Action {
                 case ALIGN -> {
                     double e = goalError(s);
                     if (Double.isNaN(e)) { state = State.FIND_GOAL; return find.decide(s); }
+                    if (!Double.isNaN(pressedHeading(s))) { state = State.DRIBBLE; continue; }
                     if (Math.abs(e) > tolerance(s)) return orbit.step(s, ball, e);
                     state = dribbles(s) ? State.DRIBBLE : State.PREPARE;
                     if (state == State.PREPARE) prepare.choose(s, strong(s));
                 }
                 case DRIBBLE -> {
-                    double toGoal = goalDirection(s);
-                    if (!dribbles(s) || Double.isNaN(toGoal)) { state = State.ALIGN; continue; }
+                    double toGoal = dribbles(s) ? goalDirection(s) : pressedHeading(s);
+                    if (Double.isNaN(toGoal)) { state = State.ALIGN; continue; }
                     dribble.direction(toGoal);
                     return dribble.decide(s);
                 }
@@ -112,6 +116,20 @@ public final class OnBall implements Action {
     private boolean dribbles(Situation s) {
         double d = distanceToGoal(s);
         return s.playMode() == PlayMode.PLAY_ON && !Double.isNaN(d) && d < config.kick().dribbleWithin();
+    }
+
+    /**
+     * Pressed: PlayOn, an opponent within pressureDistance of the ball, and the own heading within pressureMaxDeg
+     * of the direction to the opponent goal. Then the direction to walk the ball on (the heading, field frame), else NaN.
+     */
+    private double pressedHeading(Situation s) {
+        AgentConfig.Kick k = config.kick();
+        if (s.playMode() != PlayMode.PLAY_ON || k.pressureDistance() <= 0) return Double.NaN;
+        Pose2 self = Facts.self(s, config);
+        Vector2 ball = Facts.ballGlobal(s, config);
+        double toGoal = goalDirection(s);
+        if (self == null || Double.isNaN(toGoal) || !Facts.opponentNear(s, config, ball, k.pressureDistance())) return Double.NaN;
+        return Math.abs(phalanx.model.field.Angles.difference(self.thetaDeg(), toGoal)) <= k.pressureMaxDeg() ? self.thetaDeg() : Double.NaN;
     }
 
     /** Field-frame direction from the ball to the opponent goal's centre, degrees; NaN without a ball or field. */

@@ -235,20 +235,11 @@ public final class Goalkeeper implements Action {
 
     private boolean opponentNearBall(Situation s) {
         Vector2 ball = Facts.ballGlobal(s, config);
-        return ball != null && anyoneNear(s.belief().opponents(), s.belief().time(), ball, config.keeper().dribbleDistance());
+        return Facts.opponentNear(s, config, ball, config.keeper().dribbleDistance());
     }
 
     private boolean anyoneNear(List<PlayerBelief> players, double now, Vector2 ball) {
-        return anyoneNear(players, now, ball, config.keeper().liberoClearance());
-    }
-
-    private boolean anyoneNear(List<PlayerBelief> players, double now, Vector2 ball, double radius) {
-        if (players == null) return false;
-        for (PlayerBelief p : players) {
-            if (p == null || p.global() == null || !(now - p.time() <= config.beliefs().playerMemorySeconds())) continue;
-            if (p.global().distanceTo(ball) <= radius) return true;
-        }
-        return false;
+        return Facts.anyoneNear(players, now, ball, config.keeper().liberoClearance(), config);
     }
 
     private boolean cleared(FieldSpec f, Vector2 ball) {

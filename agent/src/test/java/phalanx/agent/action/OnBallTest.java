@@ -83,6 +83,29 @@ class OnBallTest {
     }
 
     @Test
+    void withAnOpponentAtTheBallItWalksTheBallOnInsteadOfLiningUpAKick() {
+        // At (12.8, 0) facing 20 deg left of the goal, the ball 0.2 m ahead: not aligned (10 deg near the goal), so
+        // on its own it goes round the ball (the align orbit) ...
+        OnBall a = new OnBall(C);
+        Move round = a.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).situation()).move();
+        assertEquals(OnBall.State.ALIGN, a.state());
+        assertFalse(round instanceof Move.Walk, round.toString());
+        // ... but with an opponent 0.6 m from the ball it walks on at once along its heading.
+        OnBall b = new OnBall(C);
+        Move m = b.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).opponentAt(5, 13.4, 0.4).situation()).move();
+        assertEquals(OnBall.State.DRIBBLE, b.state());
+        assertTrue(m instanceof Move.Walk w && !w.slow(), m.toString());
+        // Facing away from the goal (120 deg off) it does not push the ball back toward its own half.
+        OnBall c = new OnBall(C);
+        c.decide(World.at(0, 0, 120).ballRel(0.2, 0).opponentAt(5, 0.2, 0.6).situation());
+        assertNotEquals(OnBall.State.DRIBBLE, c.state());
+        // Off (pressureDistance 0): it lines up as before.
+        OnBall d = new OnBall(C.withKick(C.kick().withPressureDistance(0)));
+        d.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).opponentAt(5, 13.4, 0.4).situation());
+        assertEquals(OnBall.State.ALIGN, d.state());
+    }
+
+    @Test
     void startsAgainWhenTheBallIsTakenAwayOrLost() {
         OnBall a = new OnBall(C);
         a.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation());
