@@ -92,6 +92,10 @@ if [ -n "$only" ]; then
 fi
 for unum in $unums; do
   out="$logdir/player-$unum.out"
+  # A log of an earlier run in the same folder (a replayed tournament game) still says "in the game" until
+  # the new JVM truncates it, so the wait below would not wait and robots would connect in the same cycle,
+  # which stalls a sync-mode server (docs/matches.md, issue 21's resumed tournament).
+  rm -f "$logdir/player-$team-$unum.log"
   nohup java "${jvm[@]}" -Xlog:gc:file="$logdir/gc-$unum.log":uptime,level -cp "$cp" phalanx.agent.Player \
     --host "$host" --port "$port" --team "$team" --unum "$unum" $([ "$mj" -eq 1 ] && echo --server mj || echo --players "$players") \
     --type "${types[$((unum-1))]}" --log-dir "$logdir" --motions "$root/motions" ${PHALANX_PLAYER_OPTS:-} > "$out" 2>&1 &
