@@ -93,6 +93,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          nearest player stood 0.3-0.7 m from the ball, lining up, while theirs kicked); 0 = never ...
      * @param pressureMaxDeg    ... when its heading is within this of the direction to the opponent goal (otherwise the
      *                          push would go toward our own goal)
+     * @param shootWithin       ... but nearer the opponent goal than this it lines up and kicks (the normal kick) instead
+     *                          of dribbling on, with or without an opponent near (ours, issue 18: in g18b our dribble
+     *                          reached 2.5 m from UTA's goal and their keeper cleared it 16 s later); 0 = dribble on
     /**
      * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params
      * motions/strong_kick.xml`): a ball 1-2 cm nearer is struck earlier in the swing (its precursor went 6.6 m from 0.17 m
@@ -102,9 +105,10 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
 
     public record Kick(double spotX, double spotY, double strongSpotX, double strongSpotY, double toleranceX, double toleranceFarX, double toleranceY, double restartDistance,
                        double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
-                       double oneShotTimeout, double dribbleWithin, double pressureDistance, double pressureMaxDeg) {
+                       double oneShotTimeout, double dribbleWithin, double pressureDistance, double pressureMaxDeg,
+                       double shootWithin) {
         public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0,
-                1.0, 60);
+                1.0, 60, 4.0);
 
         /**
          * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
@@ -124,17 +128,22 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         /** The same with another strong-kick spot (a robot type with its own strong_kick.xml). */
         public Kick withStrongSpot(double x, double y) {
             return new Kick(spotX, spotY, x, y, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin);
         }
 
         public Kick withDribbleWithin(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, metres, pressureDistance, pressureMaxDeg);
+                    strongBeyond, oneShotTimeout, metres, pressureDistance, pressureMaxDeg, shootWithin);
         }
 
         public Kick withPressureDistance(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, metres, pressureMaxDeg);
+                    strongBeyond, oneShotTimeout, dribbleWithin, metres, pressureMaxDeg, shootWithin);
+        }
+
+        public Kick withShootWithin(double metres) {
+            return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, metres);
         }
     }
 

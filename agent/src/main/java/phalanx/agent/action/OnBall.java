@@ -20,7 +20,8 @@ import phalanx.model.field.Vector2;
  * the ball, facing the goal, with the omnidirectional walk), so the align orbit has little left to do.
  * Ours too (issue 18): at the ball in PlayOn with an opponent near it ({@code AgentConfig.Kick.pressureDistance}),
  * and facing within pressureMaxDeg of the opponent goal, it walks the ball on along its heading at once
- * instead of going round it and lining up a kick, which an opponent at the ball does not wait for.
+ * instead of going round it and lining up a kick, which an opponent at the ball does not wait for. Within
+ * {@code shootWithin} of the opponent goal it neither dribbles nor walks on: it lines up and shoots.
  */
 public final class OnBall implements Action {
     public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK, DRIBBLE }
@@ -112,11 +113,14 @@ public final class OnBall implements Action {
     @Override
     public boolean done(Situation s) { return justKicked; }
 
-    /** Dribble rather than kick: PlayOn, and the ball within dribbleWithin of the opponent goal. */
+    /** Dribble rather than kick: PlayOn, and the ball within dribbleWithin of the opponent goal but not within shootWithin. */
     private boolean dribbles(Situation s) {
         double d = distanceToGoal(s);
-        return s.playMode() == PlayMode.PLAY_ON && !Double.isNaN(d) && d < config.kick().dribbleWithin();
+        return s.playMode() == PlayMode.PLAY_ON && !Double.isNaN(d) && d < config.kick().dribbleWithin() && !shoots(d);
     }
+
+    /** Near enough the opponent goal to shoot: neither dribble nor walk the ball on under pressure. */
+    private boolean shoots(double distanceToGoal) { return distanceToGoal < config.kick().shootWithin(); }
 
     /**
      * Pressed: PlayOn, an opponent within pressureDistance of the ball, and the own heading within pressureMaxDeg
@@ -124,7 +128,7 @@ public final class OnBall implements Action {
      */
     private double pressedHeading(Situation s) {
         AgentConfig.Kick k = config.kick();
-        if (s.playMode() != PlayMode.PLAY_ON || k.pressureDistance() <= 0) return Double.NaN;
+        if (s.playMode() != PlayMode.PLAY_ON || k.pressureDistance() <= 0 || shoots(distanceToGoal(s))) return Double.NaN;
         Pose2 self = Facts.self(s, config);
         Vector2 ball = Facts.ballGlobal(s, config);
         double toGoal = goalDirection(s);

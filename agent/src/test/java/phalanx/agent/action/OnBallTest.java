@@ -84,15 +84,15 @@ class OnBallTest {
 
     @Test
     void withAnOpponentAtTheBallItWalksTheBallOnInsteadOfLiningUpAKick() {
-        // At (12.8, 0) facing 20 deg left of the goal, the ball 0.2 m ahead: not aligned (10 deg near the goal), so
-        // on its own it goes round the ball (the align orbit) ...
+        // At (8, 0), 7 m from the goal, facing 20 deg left of it, the ball 0.2 m ahead: not aligned (10 deg in the
+        // opponent's half), so on its own it goes round the ball (the align orbit) ...
         OnBall a = new OnBall(C);
-        Move round = a.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).situation()).move();
+        Move round = a.decide(World.at(8, 0, 20).ballRel(0.2, 0).situation()).move();
         assertEquals(OnBall.State.ALIGN, a.state());
         assertFalse(round instanceof Move.Walk, round.toString());
-        // ... but with an opponent 0.6 m from the ball it walks on at once along its heading.
+        // ... but with an opponent 0.5 m from the ball it walks on at once along its heading.
         OnBall b = new OnBall(C);
-        Move m = b.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).opponentAt(5, 13.4, 0.4).situation()).move();
+        Move m = b.decide(World.at(8, 0, 20).ballRel(0.2, 0).opponentAt(5, 8.6, 0.4).situation()).move();
         assertEquals(OnBall.State.DRIBBLE, b.state());
         assertTrue(m instanceof Move.Walk w && !w.slow(), m.toString());
         // Facing away from the goal (120 deg off) it does not push the ball back toward its own half.
@@ -101,8 +101,18 @@ class OnBallTest {
         assertNotEquals(OnBall.State.DRIBBLE, c.state());
         // Off (pressureDistance 0): it lines up as before.
         OnBall d = new OnBall(C.withKick(C.kick().withPressureDistance(0)));
-        d.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).opponentAt(5, 13.4, 0.4).situation());
+        d.decide(World.at(8, 0, 20).ballRel(0.2, 0).opponentAt(5, 8.6, 0.4).situation());
         assertEquals(OnBall.State.ALIGN, d.state());
+        // Within shootWithin (4 m) of the goal it lines up its shot, opponent or not, and does not dribble.
+        OnBall e = new OnBall(C.withKick(C.kick().withDribbleWithin(8)));
+        e.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).opponentAt(5, 13.4, 0.4).situation());
+        assertEquals(OnBall.State.ALIGN, e.state());
+        OnBall f = new OnBall(C.withKick(C.kick().withDribbleWithin(8)));
+        f.decide(World.at(12.8, 0, 0).ballRel(0.25, -0.055).situation());
+        assertEquals(OnBall.State.PREPARE, f.state(), "aligned 2 m out: kick, not dribble");
+        OnBall g = new OnBall(C.withKick(C.kick().withDribbleWithin(8).withShootWithin(0)));
+        g.decide(World.at(12.8, 0, 0).ballRel(0.25, -0.055).situation());
+        assertEquals(OnBall.State.DRIBBLE, g.state(), "shootWithin 0: dribble on as before");
     }
 
     @Test
