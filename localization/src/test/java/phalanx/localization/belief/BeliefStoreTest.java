@@ -98,6 +98,11 @@ class BeliefStoreTest {
         assertNull(s.update(unknown).self());
         assertEquals(3, st.oneLandmark());
         assertNull(s.update(null).self());
+        // A player seen with no part at all: the snapshot sends "(P (team Them) (id 9))" when only the torso is in view
+        // (docs/protocol.md, session 14). It is parsed, and not placed anywhere.
+        Perception partless = new PerceptionParser().parse("(time (now 0.12))(See (P (team Them) (id 9)) (G1R (pol 15.0 4.0 -1.0)))");
+        assertEquals(1, partless.vision().players().size());
+        assertTrue(s.update(partless).opponents().isEmpty());
     }
 
     @Test
