@@ -96,6 +96,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param shootWithin       ... but nearer the opponent goal than this it lines up and kicks (the normal kick) instead
      *                          of dribbling on, with or without an opponent near (ours, issue 18: in g18b our dribble
      *                          reached 2.5 m from UTA's goal and their keeper cleared it 16 s later); 0 = dribble on
+     */
     /**
      * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params
      * motions/strong_kick.xml`): a ball 1-2 cm nearer is struck earlier in the swing (its precursor went 6.6 m from 0.17 m
@@ -224,7 +225,7 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          (docs/matches.md, scripts/phalanx keeper-test)
      * @param challengeDepth    Challenge: the keeper leaves its spot for a ball this near our goal line ... (ours,
      *                          issue 18: UT Austin Villa scored all its goals from 0.3-3.7 m, the keeper standing
-     *                          on its line; docs/matches.md, sessions 14). 0: never
+     *                          on its line; docs/matches.md, session 14). 0: never
      * @param challengeWidth    ... and at most this far from the goal's middle line, m
      * @param challengeExit     it goes back to its spot once the ball is this much beyond that box, m
      * @param challengePush     it walks to the point this far past the ball on the line from the goal's centre,
@@ -241,13 +242,6 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         /** The thesis's keeper: Libero on, the middle of the goal, a dive for any approaching ball, no challenge. */
         public static final Keeper THESIS = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
                 0.2, 0.6, 0.0, 0.0, 0.15, true, 0.0, 2.5, 0.7, 0.3);
-
-        /** The keeper as it was before Challenge (docs/matches.md, session 14), for games that judge it. */
-        public Keeper withoutChallenge() {
-            return new Keeper(spotOffset, diveSeconds, postMargin, bodyBlock, ballDecay, minApproachSpeed, relocalizeDistance,
-                    liberoClearance, liberoExitMargin, liberoMaxSpeed, shotSpeed, dribbleDistance, minDiveDistance, maxShift,
-                    shiftTolerance, libero, 0.0, challengeWidth, challengeExit, challengePush);
-        }
     }
 
     /**

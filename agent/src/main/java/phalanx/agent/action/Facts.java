@@ -2,10 +2,13 @@ package phalanx.agent.action;
 
 import phalanx.agent.AgentConfig;
 import phalanx.agent.decide.Situation;
+import phalanx.localization.belief.PlayerBelief;
 import phalanx.localization.belief.WorldBelief;
 import phalanx.localization.fall.FallState;
 import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;
+
+import java.util.List;
 
 /**
  * The belief questions every action asks, answered safely: a missing belief, a NaN or a ball never
@@ -63,10 +66,10 @@ public final class Facts {
     }
 
     /** True when one of these players, seen within the player memory time, is believed within {@code radius} of a point. */
-    public static boolean anyoneNear(java.util.List<phalanx.localization.belief.PlayerBelief> players, double now, Vector2 point,
+    public static boolean anyoneNear(List<PlayerBelief> players, double now, Vector2 point,
                                      double radius, AgentConfig c) {
         if (players == null || point == null) return false;
-        for (phalanx.localization.belief.PlayerBelief p : players) {
+        for (PlayerBelief p : players) {
             if (p == null || p.global() == null || !(now - p.time() <= c.beliefs().playerMemorySeconds())) continue;
             if (p.global().distanceTo(point) <= radius) return true;
         }

@@ -5,6 +5,7 @@ import phalanx.agent.decide.Action;
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Situation;
 import phalanx.comm.perception.PlayMode;
+import phalanx.model.field.Angles;
 import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;
 
@@ -133,7 +134,7 @@ public final class OnBall implements Action {
         Vector2 ball = Facts.ballGlobal(s, config);
         double toGoal = goalDirection(s);
         if (self == null || Double.isNaN(toGoal) || !Facts.opponentNear(s, config, ball, k.pressureDistance())) return Double.NaN;
-        return Math.abs(phalanx.model.field.Angles.difference(self.thetaDeg(), toGoal)) <= k.pressureMaxDeg() ? self.thetaDeg() : Double.NaN;
+        return Math.abs(Angles.difference(self.thetaDeg(), toGoal)) <= k.pressureMaxDeg() ? self.thetaDeg() : Double.NaN;
     }
 
     /** Field-frame direction from the ball to the opponent goal's centre, degrees; NaN without a ball or field. */

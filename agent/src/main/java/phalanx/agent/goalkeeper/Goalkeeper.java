@@ -157,14 +157,12 @@ public final class Goalkeeper implements Action {
             toBall = null;
             return walkToSpot(s).decide(s);
         }
-        Vector2 goal = new Vector2(-s.field().halfLength(), 0);
-        Vector2 out = ball.minus(goal);
+        Vector2 out = ball.minus(new Vector2(-s.field().halfLength(), 0));
         double n = out.norm();
-        Vector2 u = n < 1e-6 ? new Vector2(1, 0) : new Vector2(out.x() / n, out.y() / n);
-        double push = config.keeper().challengePush();
-        double x = ball.x() + push * u.x(), y = ball.y() + push * u.y(), theta = u.angleDeg();
-        if (toBall == null) toBall = new WalkToCoordinate(config, x, y, theta);
-        else toBall.target(x, y, theta);
+        Vector2 u = n < 1e-6 ? new Vector2(1, 0) : out.times(1 / n);
+        Vector2 to = ball.plus(u.times(config.keeper().challengePush()));
+        if (toBall == null) toBall = new WalkToCoordinate(config, to.x(), to.y(), u.angleDeg());
+        else toBall.target(to.x(), to.y(), u.angleDeg());
         return Decision.of(toBall.decide(s).move(), track.head(s));
     }
 
