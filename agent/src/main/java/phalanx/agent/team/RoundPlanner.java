@@ -12,6 +12,7 @@ import phalanx.coordination.Coordinator;
 import phalanx.coordination.Memory;
 import phalanx.coordination.Mode;
 import phalanx.coordination.TeamPlan;
+import phalanx.coordination.beliefs.PlayerBelief;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
 import phalanx.localization.belief.WorldBelief;
@@ -19,6 +20,7 @@ import phalanx.model.field.FieldSpec;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 import java.util.logging.Logger;
@@ -67,6 +69,7 @@ public final class RoundPlanner implements CoordinationProcedure {
             LOG.warning("coordination round " + round.round() + " skipped: " + e.getMessage());
             return List.of();
         }
+        if (plan.onBall() != memory.onBall()) logOnBallChange(round.round(), memory.onBall(), plan);
         memory = plan.memory();
         lastPlan = plan;
         List<Action> out = new ArrayList<>();
@@ -76,6 +79,26 @@ public final class RoundPlanner implements CoordinationProcedure {
             if (a != null) out.add(order(a));
         }
         return out;
+    }
+
+    /**
+     * One line when On Ball moves to another player: the ball and each active player's report type, position and
+     * ball distance as the coordinator had them, so a match review can tell why a player at the ball lost it.
+     */
+    private static void logOnBallChange(int round, int from, TeamPlan plan) {
+        StringBuilder sb = new StringBuilder(160);
+        sb.append(String.format(Locale.ROOT, "round %d: On Ball %d -> %d, ball (%.2f,%.2f);", round, from, plan.onBall(),
+                plan.ball().x(), plan.ball().y()));
+        List<Integer> shown = new ArrayList<>(plan.subsets().active());
+        if (from > 0 && !shown.contains(from)) shown.add(from);
+        for (int id : shown) {
+            PlayerBelief p = plan.beliefs().player(id);
+            if (p == null) { sb.append(' ').append(id).append(":none"); continue; }
+            sb.append(String.format(Locale.ROOT, " %d:%s%s", id, p.type(), p.fallen() ? "/fallen" : ""));
+            if (p.position() != null) sb.append(String.format(Locale.ROOT, " (%.2f,%.2f) d=%.2f", p.position().x(), p.position().y(), p.ballDistance()));
+            if (!plan.subsets().active().contains(id)) sb.append(" (not active)");
+        }
+        LOG.info(sb.toString());
     }
 
     /** The last plan computed, for debug drawing; null before the first round. */
