@@ -248,9 +248,13 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param onBallDistance  while the coordinator is quiet a player goes On Ball when the ball is this
      *                        near and no teammate is seen closer (ours; comm.team.round.FieldPlayerRounds's fallback)
      * @param hysteresis      a teammate must be this much closer to take the ball over (ours)
+     * @param keepBallWithin  a player the coordinator took off On Ball while the ball was this near it keeps
+     *                        On Ball until the ball is farther (ours, issue 18: the coordinator's reports are a round
+     *                        old and coarse, and in games vs UT Austin Villa it took On Ball away from players
+     *                        dribbling the ball 0.2-0.5 m ahead 14-20 times a game; docs/matches.md, session 15); 0 = never
      */
-    public record Fallback(double onBallDistance, double hysteresis) {
-        public static final Fallback DEFAULT = new Fallback(5.0, 0.5);
+    public record Fallback(double onBallDistance, double hysteresis, double keepBallWithin) {
+        public static final Fallback DEFAULT = new Fallback(5.0, 0.5, 0.5);
     }
 
     /**
@@ -293,6 +297,8 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach, kickOff); }
 
     public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a, kickOff); }
+
+    public AgentConfig withFallback(Fallback f) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, f, approach, kickOff); }
 
     public AgentConfig withKickOff(KickOff k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, k); }
 

@@ -20,7 +20,8 @@ import java.util.logging.Logger;
 /**
  * A field player's decisions each cycle. Stand Up comes first whenever the robot is down (and it
  * waits while it is only falling). Otherwise it runs the coordinator's last order (thesis 5.3:
- * one action, executed until the next one), or, when there is none or the coordinator has gone
+ * one action, executed until the next one; ours: an On Ball player with the ball within
+ * {@code fallback.keepBallWithin} keeps On Ball until the ball is farther), or, when there is none or the coordinator has gone
  * quiet, its own choice (the kick-off's taker and partner excepted, {@link KickOffPlay}):
  * <ul>
  *   <li>On Ball when the ball is known, within {@code fallback.onBallDistance}, and no teammate
@@ -80,7 +81,7 @@ public final class FieldPlayerBehaviour {
         Decision k = kickOff.decide(s);
         if (k != null) return k;
         if (order != null && !coordinatorQuiet) {
-            running = ordered(order);
+            if (!keepsTheBall(s, order)) running = ordered(order);
             runningOwn = false;
         } else {
             running = ownChoice(s, home);
@@ -105,6 +106,16 @@ public final class FieldPlayerBehaviour {
         LOG.info(String.format(Locale.ROOT, "action %s%s (%s) at game time %.2f ball=%s", running.getClass().getSimpleName(),
                 phase == null ? "" : " " + phase, runningOwn ? "own" : "ordered", s.gameTime(),
                 ball == null ? "?" : String.format(Locale.ROOT, "(%.2f,%.2f)", ball.x(), ball.y())));
+    }
+
+    /**
+     * An ordered On Ball player with the ball within keepBallWithin keeps On Ball whatever the new order says,
+     * until the ball is farther: the coordinator plans from reports a round old (AgentConfig.Fallback).
+     */
+    private boolean keepsTheBall(Situation s, phalanx.comm.team.Action next) {
+        if (next.id() == ActionId.ON_BALL || runningOwn || !(running instanceof OnBall)) return false;
+        Vector2 ball = Facts.ball(s, config);
+        return ball != null && ball.norm() <= config.fallback().keepBallWithin();
     }
 
     /** The instance for an order: the running one when the id is unchanged, retargeted. */

@@ -28,11 +28,36 @@ class FieldPlayerBehaviourTest {
         assertSame(first, b.running());
         assertEquals(OnBall.State.ALIGN, ((OnBall) b.running()).state());
         b.order(Action.walkTo(5, 1, 2, 0));
-        b.decide(World.at(0, 0, 0).situation(), false, HOME);
+        b.decide(World.at(0, 0, 0).ballRel(2, 0).situation(), false, HOME);
         assertTrue(b.running() instanceof WalkToCoordinate);
         b.order(Action.of(5, ActionId.ON_BALL));
         b.decide(World.at(0, 0, 0).ballRel(2, 0).situation(), false, HOME);
         assertNotSame(first, b.running(), "a new On Ball order after another action starts afresh");
+    }
+
+    @Test
+    void anOnBallPlayerWithTheBallAtItsFeetKeepsItWhenOrderedElsewhere() {
+        FieldPlayerBehaviour b = new FieldPlayerBehaviour(C);
+        b.order(Action.of(5, ActionId.ON_BALL));
+        b.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation(), false, HOME);
+        var onBall = b.running();
+        // Ordered to a position (or to localize) with the ball 0.25 m ahead: it stays on the ball.
+        b.order(Action.walkTo(5, 1, 2, 0));
+        b.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation(), false, HOME);
+        assertSame(onBall, b.running());
+        b.order(Action.of(5, ActionId.TURN_TO_LOCALIZE));
+        b.decide(World.at(0, 0, 90).ballRel(0.3, 0).situation(), false, HOME);
+        assertSame(onBall, b.running());
+        // Once the ball is beyond keepBallWithin (0.5 m) the order is carried out.
+        b.decide(World.at(0, 0, 90).ballRel(0.8, 0).situation(), false, HOME);
+        assertTrue(b.running() instanceof TurnToLocalize, b.running().toString());
+        // With keepBallWithin 0 the order is carried out at once, as before.
+        FieldPlayerBehaviour c = new FieldPlayerBehaviour(C.withFallback(new AgentConfig.Fallback(5.0, 0.5, 0)));
+        c.order(Action.of(5, ActionId.ON_BALL));
+        c.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation(), false, HOME);
+        c.order(Action.walkTo(5, 1, 2, 0));
+        c.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation(), false, HOME);
+        assertTrue(c.running() instanceof WalkToCoordinate, c.running().toString());
     }
 
     @Test
