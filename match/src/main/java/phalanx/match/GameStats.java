@@ -335,12 +335,34 @@ public final class GameStats {
     }
 
     /** Reads a monitor log, plain or gzipped, one message a line. */
+    /** The robot's torso in the scene as it stands now, {x, y, upZ} (upZ below 0.5: lying), or null when not on the field. */
+    public double[] torso(Side side, int unum) {
+        if (unum < 1 || unum > players || !scene.hasScene()) return null;
+        MonitorScene.Pose p = scene.torso(unum, side == Side.LEFT ? "Left" : "Right");
+        return p == null ? null : new double[] {p.x(), p.y(), p.upZ()};
+    }
+
+    /** The ball in the scene as it stands now, {x, y, z}, or null before the first scene. */
+    public double[] ball() {
+        double[] b = scene.hasScene() ? scene.ball() : null;
+        return b == null ? null : b.clone();
+    }
+
     public static GameStats read(Path log, int players) throws IOException {
+        return read(log, players, g -> { });
+    }
+
+    /** As {@link #read(Path, int)}, calling {@code afterEach} after every message (for a robot's track). */
+    public static GameStats read(Path log, int players, java.util.function.Consumer<GameStats> afterEach) throws IOException {
         GameStats g = new GameStats(players);
         try (InputStream raw = Files.newInputStream(log);
              InputStream in = log.toString().endsWith(".gz") ? new GZIPInputStream(raw) : raw;
              BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.ISO_8859_1))) {
-            for (String line; (line = r.readLine()) != null; ) if (!line.isBlank()) g.accept(line);
+            for (String line; (line = r.readLine()) != null; ) {
+                if (line.isBlank()) continue;
+                g.accept(line);
+                afterEach.accept(g);
+            }
         }
         return g;
     }
@@ -350,12 +372,38 @@ public final class GameStats {
               MONITOR_LOG is a match's monitor.log.gz (scripts/phalanx match records one per match) or any
               monitor stream saved one message a line; prints one game-stats line per team;
               --kicks also lists every kick (time, team, from, to, length);
-              --goals every goal: its shot (from where, how long, the defence when it left) or walked in""";
+              --goals every goal: its shot (from where, how long, the defence when it left) or walked in;
+              --track left:1 a robot's torso (x, y, lying or up) and the ball every --every S game seconds
+              (default 1), between --from and --to (game time); repeat --track for more robots""";
+
+    /** A robot named on the command line, {@code left:1}. */
+    record Tracked(Side side, int unum) {
+        static Tracked parse(String s) {
+            String[] a = s.split(":");
+            if (a.length == 2 && (a[0].equals("left") || a[0].equals("right"))) {
+                try {
+                    int u = Integer.parseInt(a[1]);
+                    if (u >= 1 && u <= 11) return new Tracked(a[0].equals("left") ? Side.LEFT : Side.RIGHT, u);
+                } catch (NumberFormatException e) { /* refused below */ }
+            }
+            throw new IllegalArgumentException("game-stats: --track wants left:N or right:N with N 1-11, got '" + s + "'");
+        }
+
+        String line(double t, GameStats g) {
+            double[] p = g.torso(side, unum), b = g.ball();
+            String who = (side == Side.LEFT ? "left " : "right ") + unum;
+            String robot = p == null ? "not on the field" : String.format(Locale.ROOT, "(%.2f,%.2f) %s", p[0], p[1], p[2] < LYING_UP_Z ? "lying" : "up");
+            String ball = b == null ? "" : String.format(Locale.ROOT, " ball (%.2f,%.2f)", b[0], b[1]);
+            return String.format(Locale.ROOT, "track t=%.2f %s %s%s", t, who, robot, ball);
+        }
+    }
 
     public static void main(String[] argv) {
         Path log = null, svg = null;
         int players = 11;
         boolean listKicks = false, listGoals = false;
+        java.util.List<Tracked> tracked = new java.util.ArrayList<>();
+        double every = 1, from = 0, to = Double.POSITIVE_INFINITY;
         try {
             for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of("--kicks", "--goals"))) {
                 switch (p[0]) {
@@ -363,6 +411,10 @@ public final class GameStats {
                     case "--goals" -> listGoals = true;
                     case "--svg" -> svg = Path.of(p[1]);
                     case "--players" -> players = (int) Flags.number(p[0], p[1], 1, 11, true);
+                    case "--track" -> tracked.add(Tracked.parse(p[1]));
+                    case "--every" -> every = Flags.number(p[0], p[1], 0.02, 3600, false);
+                    case "--from" -> from = Flags.number(p[0], p[1], 0, 1e6, false);
+                    case "--to" -> to = Flags.number(p[0], p[1], 0, 1e6, false);
                     default -> throw Flags.unknown(p[0], USAGE);
                 }
             }
@@ -375,7 +427,14 @@ public final class GameStats {
             System.exit(help ? 0 : 2);
         }
         try {
-            GameStats g = read(log, players);
+            double step = every, start = from, end = to;
+            double[] next = {start};
+            GameStats g = read(log, players, tracked.isEmpty() ? x -> { } : x -> {
+                double t = x.state().time();
+                if (!Double.isFinite(t) || t < next[0] || t > end) return;
+                for (Tracked r : tracked) System.out.println(r.line(t, x));
+                next[0] = t + step - 1e-6;
+            });
             if (g.messages() == 0 || !g.scene.hasScene()) {
                 System.err.println("game-stats: " + log + " holds no monitor scene (" + g.messages() + " lines read)");
                 System.exit(1);

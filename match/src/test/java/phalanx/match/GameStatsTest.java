@@ -145,6 +145,35 @@ class GameStatsTest {
     }
 
     @Test
+    void aTrackedRobotIsPrintedEveryStepWithTheBall(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        // Player 1 walks from x = 0 to x = 2 in 2 s (0.04 s a picture), then lies; the ball stays at (5, 1).
+        StringBuilder log = new StringBuilder();
+        double t = 0;
+        for (int i = 0; i <= 50; i++, t += 0.04) log.append(scene(t, PLAY_ON, 5, 1, i * 0.04, 0, false)).append('\n');
+        for (int i = 0; i < 25; i++, t += 0.04) log.append(scene(t, PLAY_ON, 5, 1, 2, 0, true)).append('\n');
+        Path file = dir.resolve("monitor.log");
+        java.nio.file.Files.writeString(file, log);
+        GameStats.Tracked me = GameStats.Tracked.parse("left:1"), them = GameStats.Tracked.parse("right:4");
+        java.util.List<String> lines = new java.util.ArrayList<>();
+        double[] next = {0};
+        GameStats.read(file, 11, g -> {
+            if (g.state().time() < next[0]) return;
+            lines.add(me.line(g.state().time(), g));
+            lines.add(them.line(g.state().time(), g));
+            next[0] += 1;
+        });
+        assertEquals(8, lines.size(), lines.toString());
+        assertEquals("track t=0.00 left 1 (0.00,0.00) up ball (5.00,1.00)", lines.get(0));
+        assertEquals("track t=3.00 left 1 (2.00,0.00) lying ball (5.00,1.00)", lines.get(6));
+        assertEquals("track t=0.00 right 4 not on the field ball (5.00,1.00)", lines.get(1));
+        assertEquals("track t=1.00 left 1 (1.00,0.00) up ball (5.00,1.00)", lines.get(2));
+        assertEquals("track t=2.00 left 1 (2.00,0.00) up ball (5.00,1.00)", lines.get(4));
+        assertThrows(IllegalArgumentException.class, () -> GameStats.Tracked.parse("middle:1"));
+        assertThrows(IllegalArgumentException.class, () -> GameStats.Tracked.parse("left:12"));
+        assertThrows(IllegalArgumentException.class, () -> GameStats.Tracked.parse("left"));
+    }
+
+    @Test
     void theCommandRefusesAMissingLog() {
         assertThrows(java.nio.file.NoSuchFileException.class, () -> GameStats.read(Path.of("/nonexistent/monitor.log.gz"), 11));
     }
