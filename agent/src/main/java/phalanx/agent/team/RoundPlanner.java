@@ -41,6 +41,10 @@ public final class RoundPlanner implements CoordinationProcedure {
     private final BooleanSupplier goalkeeperHasBall;
     private Memory memory = Memory.NONE;
     private TeamPlan lastPlan;
+    /** Each field player's last report heard, with the round it was heard in. */
+    private final java.util.Map<Integer, Heard> lastHeard = new java.util.TreeMap<>();
+
+    private record Heard(int round, TeamMessage.Report report) {}
 
     public RoundPlanner(Coordinator coordinator, FieldSpec field, int selfUnum, Supplier<WorldBelief> ownBelief,
                             Supplier<PlayMode> playMode, BooleanSupplier goalkeeperHasBall) {
@@ -58,7 +62,18 @@ public final class RoundPlanner implements CoordinationProcedure {
         List<PlayerReport> reports = new ArrayList<>();
         reports.add(Reports.toCoordination(Reports.of(selfUnum, me)));
         for (TeamMessage.Report r : round.reports().values()) {
-            if (r.sender() != selfUnum) reports.add(Reports.toCoordination(r));
+            if (r.sender() == selfUnum) continue;
+            reports.add(Reports.toCoordination(r));
+            lastHeard.put(r.sender(), new Heard(round.round(), r));
+        }
+        // A report lost on the channel drops its player from the round's plan, and On Ball went to a player 12 m
+        // from the ball (docs/matches.md, session 15). The channel counts a player inactive after
+        // inactiveAfterMissedRounds (2) rounds; until then, one round missing, its previous round's report stands in.
+        for (Heard h : lastHeard.values()) {
+            int u = h.report().sender();
+            if (h.round() == round.round() - 1 && !round.reports().containsKey(u) && !round.inactive().contains(u)) {
+                reports.add(Reports.toCoordination(h.report()));
+            }
         }
         Mode mode = Mode.of(playMode.get(), side, goalkeeperHasBall.getAsBoolean());
         TeamPlan plan;

@@ -29,6 +29,45 @@ class RoundPlannerTest {
         return new RoundReports(n, n * 10L, m, Set.of());
     }
 
+    private static RoundReports round(int n, Set<Integer> inactive, TeamMessage.Report... r) {
+        Map<Integer, TeamMessage.Report> m = new java.util.TreeMap<>();
+        for (TeamMessage.Report x : r) m.put(x.sender(), x);
+        return new RoundReports(n, n * 10L, m, inactive);
+    }
+
+    private static RoundPlanner planner() {
+        return new RoundPlanner(new Coordinator(CoordinationConfig.THESIS, new DynamicProgrammingSupportMapper()),
+                FieldSpec.V066, 1, () -> null, () -> PlayMode.PLAY_ON, () -> false);
+    }
+
+    @Test
+    void aPlayerNotHeardForOneRoundKeepsItsLastReport() {
+        RoundPlanner p = planner();
+        TeamMessage.Report atBall = new TeamMessage.Complete(2, 1.7, 0, 0, 2, 0);
+        TeamMessage.Report far = new TeamMessage.Complete(3, -8, 3, 0, 2, 0);
+        assertTrue(p.actions(round(1, Set.of(), atBall, far)).contains(Action.of(2, ActionId.ON_BALL)));
+        // Round 2: player 2's report is lost on the channel; its round-1 report stands in, so it stays On Ball
+        // (and is ordered), instead of On Ball going to player 3, 10 m away.
+        List<Action> second = p.actions(round(2, Set.of(), far));
+        assertTrue(second.contains(Action.of(2, ActionId.ON_BALL)), second.toString());
+        assertFalse(second.contains(Action.of(3, ActionId.ON_BALL)), second.toString());
+        // Round 3: missing again, the channel counts it inactive; its old report is not used any more.
+        List<Action> third = p.actions(round(3, Set.of(2), far));
+        assertTrue(third.contains(Action.of(3, ActionId.ON_BALL)), third.toString());
+        assertTrue(third.stream().noneMatch(a -> a.recipient() == 2), third.toString());
+    }
+
+    @Test
+    void aReportOlderThanThePreviousRoundIsNotUsed() {
+        RoundPlanner p = planner();
+        TeamMessage.Report far = new TeamMessage.Complete(3, -8, 3, 0, 2, 0);
+        p.actions(round(1, Set.of(), new TeamMessage.Complete(2, 1.7, 0, 0, 2, 0), far));
+        // Round 2 was aborted (a play-mode change): the planner next sees round 3, without player 2.
+        List<Action> third = p.actions(round(3, Set.of(), far));
+        assertTrue(third.contains(Action.of(3, ActionId.ON_BALL)), third.toString());
+        assertTrue(third.stream().noneMatch(a -> a.recipient() == 2), third.toString());
+    }
+
     @Test
     void ordersTheNearestOnBallAndLogsWhenOnBallMoves() {
         RoundPlanner p = new RoundPlanner(new Coordinator(CoordinationConfig.THESIS, new DynamicProgrammingSupportMapper()),
