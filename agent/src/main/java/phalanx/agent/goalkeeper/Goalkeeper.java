@@ -160,10 +160,23 @@ public final class Goalkeeper implements Action {
         Vector2 out = ball.minus(new Vector2(-s.field().halfLength(), 0));
         double n = out.norm();
         Vector2 u = n < 1e-6 ? new Vector2(1, 0) : out.times(1 / n);
-        Vector2 to = ball.plus(u.times(config.keeper().challengePush()));
+        Vector2 to = insideOwnArea(s.field(), ball.plus(u.times(config.keeper().challengePush())));
         if (toBall == null) toBall = new WalkToCoordinate(config, to.x(), to.y(), u.angleDeg());
         else toBall.target(to.x(), to.y(), u.angleDeg());
         return Decision.of(toBall.decide(s).move(), track.head(s));
+    }
+
+    /** How far inside its penalty area's edges the keeper's Challenge stops. */
+    private static final double AREA_MARGIN = 0.15;
+
+    /**
+     * The point moved inside our penalty area by AREA_MARGIN. The server's charging rule spares a goalie only inside
+     * its own penalty area (SimSpark soccerruleaspect.cpp, AnalyseChargingFouls): in g20b the keeper met an opponent at
+     * the ball 2.7 m out, was taken off to the touch line (377 s) and the goal fell while it walked back.
+     */
+    private static Vector2 insideOwnArea(FieldSpec f, Vector2 p) {
+        double maxX = -f.halfLength() + f.penaltyDepth() - AREA_MARGIN, maxY = f.penaltyWidth() / 2 - AREA_MARGIN;
+        return new Vector2(Math.min(p.x(), maxX), Math.max(-maxY, Math.min(maxY, p.y())));
     }
 
     /** The ball (believed, field frame) in front of our goal line, within challengeDepth of it and challengeWidth of the middle, grown by a margin. */

@@ -185,6 +185,19 @@ class GoalkeeperTest {
     }
 
     @Test
+    void challengeStopsAtThePenaltyAreasEdge() {
+        // Ball at (-12.4, 0), 2.6 m out: in the Challenge box but outside the 1.8 m penalty area, where the server's
+        // charging rule no longer spares a goalie. The keeper walks out to the area's edge (x = -13.35) and stops there.
+        Goalkeeper k = guarding();
+        Move out = k.decide(World.at(-14.5, 0, 0).ballAt(-12.4, 0).situation()).move();
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        assertTrue(out instanceof Move.Walk, out.toString());
+        Move atEdge = k.decide(World.at(-13.35, 0, 0).ballAt(-12.4, 0).situation()).move();
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        assertFalse(atEdge instanceof Move.Walk || atEdge instanceof Move.Omni, "walked on past the area: " + atEdge);
+    }
+
+    @Test
     void behaviourStandsUpWhenDownButNeverInterruptsADive() {
         GoalkeeperBehaviour b = new GoalkeeperBehaviour(C);
         b.decide(World.at(-14.5, 0, 0).ballAt(0, 0).situation());
