@@ -11,6 +11,9 @@ import phalanx.motion.t1.T1Gait;
 import phalanx.motion.t1.T1GaitConfig;
 import phalanx.motion.t1.T1Kick;
 import phalanx.motion.t1.T1KickConfig;
+import phalanx.motion.t1.T1Motion;
+import phalanx.motion.t1.T1MotionLoader;
+import phalanx.motion.t1.T1MotionPlayer;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -20,6 +23,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -310,6 +314,92 @@ public final class T1Bench {
                 dist.stream().mapToDouble(d -> d).max().orElse(Double.NaN), falls, (System.nanoTime() - wall) / 1e9);
     }
 
+    /** One get-up of the get-up trial: which side it lay on, whether it stood at the end, its time. */
+    record GetUpResult(String lay, String motion, boolean stood, double seconds, double torsoZ, String note) {
+        String line(int i) {
+            return String.format(Locale.ROOT, "get-up %2d  lying on its %s  %s  %s  %.2f s  torso z %.2f m%s", i, lay, motion,
+                    stood ? "STOOD" : "failed", seconds, torsoZ, note.isEmpty() ? "" : "  (" + note + ")");
+        }
+    }
+
+    static final double LIE_SETTLE_S = 1.5;     // lying still after the drop before the get-up starts
+    static final double STAND_AFTER_S = 3.0;    // standing after the get-up; stood = upright through it
+    static final double UPRIGHT_TILT_DEG = 30;
+
+    /** Lying on the front (torso x axis down), back (x up) or a side, from the torso's attitude. */
+    static String lyingOn(double[] q) {
+        double w = q[0], x = q[1], y = q[2], z = q[3];
+        double fz = 2 * (x * z - w * y);   // world z of the torso's forward (x) axis
+        double lz = 2 * (y * z + w * x);   // ... of its left (y) axis
+        if (Math.abs(fz) >= Math.abs(lz)) return fz < 0 ? "front" : "back";
+        return lz < 0 ? "left side" : "right side";
+    }
+
+    /**
+     * The get-up trial: beam and stand, then the monitor lays the robot down ({@code (agent ... (move3d x y z q))}:
+     * joints to zero, face down for "front", face up for "back", a seeded random heading and up to 10 deg of roll),
+     * it lies LIE_SETTLE_S holding the stand pose, plays the get-up for the side it lies on (motions/t1/
+     * get_up_front|back.motion) once, stands STAND_AFTER_S, and has stood when the torso was upright (tilt under
+     * 30 deg) through that time.
+     */
+    GetUpResult getUp(T1Gait gait, Map<String, T1Motion> motions, String lay, java.util.Random rnd) throws IOException {
+        if (!reset(gait, -10, 0, 0)) return new GetUpResult(lay, "-", false, 0, p.pos()[2], "fell while standing before");
+        double yaw = Math.toRadians(360 * rnd.nextDouble()), roll = Math.toRadians(10 * (2 * rnd.nextDouble() - 1));
+        double pitch = Math.toRadians(lay.equals("front") ? 90 : -90);
+        double[] q = mul(axis(0, 0, 1, yaw), mul(axis(0, 1, 0, pitch), axis(1, 0, 0, roll)));
+        server.command(String.format(Locale.ROOT, "(agent (unum 2) (team Phalanx) (move3d -10 0 0.35 %.5f %.5f %.5f %.5f))", q[0], q[1], q[2], q[3]));
+        for (int i = 0; i < LIE_SETTLE_S / 0.02; i++) cycle(joints(gait.stand()));
+        String side = lyingOn(p.quat());
+        T1Motion m = motions.get(side.startsWith("front") ? "get_up_front" : "get_up_back");
+        T1MotionPlayer player = new T1MotionPlayer(0.02, T1MotionPlayer.Gains.DEFAULT);
+        MjPerception now = p;
+        player.start(m, a -> measuredDeg(now, a));
+        double t = 0;
+        while (player.active()) {
+            cycle(joints(player.next()));
+            t += 0.02;
+            if (verbose && Math.round(t / 0.02) % KICK_TRACE_EVERY == 0) trace(player.poseName(), t);
+        }
+        gait.feedback(0, 0, 0, 0);
+        boolean stood = true;
+        for (int i = 0; i < STAND_AFTER_S / 0.02; i++) {
+            feed(gait);
+            cycle(joints(gait.stand()));
+            if (verbose && i % 10 == 0) trace("stand", t + i * 0.02);
+            stood &= tiltDeg(p.quat()) < UPRIGHT_TILT_DEG;
+        }
+        return new GetUpResult(side, m.name(), stood, m.seconds(), p.pos()[2], "");
+    }
+
+    static double measuredDeg(MjPerception p, String actuator) {
+        double[] v = p.joints().get(phalanx.model.robot.T1Joints.byActuator(actuator).perceptor());
+        return v == null ? 0 : v[0];
+    }
+
+    static double[] axis(double x, double y, double z, double a) {
+        double s = Math.sin(a / 2);
+        return new double[]{Math.cos(a / 2), x * s, y * s, z * s};
+    }
+
+    static double[] mul(double[] a, double[] b) {
+        return new double[]{a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3], a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+                a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1], a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]};
+    }
+
+    void getUpTrial(T1Gait gait, Map<String, T1Motion> motions, int n, String lying) throws IOException {
+        java.util.Random rnd = new java.util.Random(20);
+        int stood = 0;
+        long wall = System.nanoTime();
+        for (int i = 1; i <= n; i++) {
+            String lay = lying.equals("both") ? (i % 2 == 1 ? "front" : "back") : lying;
+            GetUpResult r = getUp(gait, motions, lay, rnd);
+            System.out.println(r.line(i));
+            System.out.flush();
+            if (r.stood()) stood++;
+        }
+        System.out.printf(Locale.ROOT, "get-up summary: %d of %d stood at the first try (%s)   (%.0f s wall)%n", stood, n, lying, (System.nanoTime() - wall) / 1e9);
+    }
+
     static double median(List<Double> v) {
         List<Double> s = new ArrayList<>(v);
         java.util.Collections.sort(s);
@@ -327,6 +417,9 @@ public final class T1Bench {
         int kicks = 10;
         double jitter = 0;
         String foot = "right";
+        String lying = "both";
+        int getups = 10;
+        Path motionDir = Path.of("motions", "t1");
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--trial" -> trial = args[++i];
@@ -355,6 +448,13 @@ public final class T1Bench {
                     if (!foot.equals("left") && !foot.equals("right") && !foot.equals("both"))
                         throw new IllegalArgumentException("--foot left|right|both");
                 }
+                case "--lying" -> {
+                    lying = args[++i];
+                    if (!lying.equals("front") && !lying.equals("back") && !lying.equals("both"))
+                        throw new IllegalArgumentException("--lying front|back|both");
+                }
+                case "--getups" -> getups = Integer.parseInt(args[++i]);
+                case "--motions" -> motionDir = Path.of(args[++i]);
                 case "--verbose" -> verbose = true;
                 case "-h", "--help" -> {
                     System.out.println("""
@@ -367,7 +467,10 @@ public final class T1Bench {
                             kick (not in all): --kicks N (10) kicks with --foot (right; both alternates), the ball placed in
                             front of the foot (up to --ball-jitter M off it in x and y, seeded); per kick the ball's travel,
                             its direction error and a fall; --kick changes
-                            T1KickConfig.defaults(), e.g. --kick swing.kickX=0.25 or --kick legKp=250.""");
+                            T1KickConfig.defaults(), e.g. --kick swing.kickX=0.25 or --kick legKp=250.
+                            getup (not in all): --getups N (10) times laid down by the monitor, --lying front|back|both
+                            (both: alternating), get_up_front|back.motion from --motions DIR (motions/t1) played once;
+                            per get-up whether it stood.""");
                     return;
                 }
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
@@ -403,6 +506,13 @@ public final class T1Bench {
                     }
                     for (String t : trials) {
                         T1Gait gait = new T1Gait(config);
+                        if (t.equals("getup")) {
+                            Map<String, T1Motion> ms = new java.util.HashMap<>();
+                            for (String name : List.of("get_up_front", "get_up_back"))
+                                ms.put(name, T1MotionLoader.load(motionDir.resolve(name + ".motion")));
+                            b.getUpTrial(gait, ms, getups, lying);
+                            continue;
+                        }
                         if (t.equals("kick")) {
                             b.kickTrial(gait, new T1Kick(config, kickConfig), kicks, foot, jitter);
                             continue;

@@ -11,9 +11,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.EnumSet;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.function.Function;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -46,6 +47,29 @@ public final class TextMotionLoader {
     }
 
     public static TextMotion parse(String name, String source, Reader reader) throws MotionFileException, IOException {
+        Table<Joint> t = read(source, reader, n -> {
+            WebotsJoints.Mapping m = WebotsJoints.byWebotsName(n);
+            return m == null ? null : new Column<>(m.joint(), m.sign(), m.joint().perceptorName(),
+                    JointLimits.minDeg(m.joint()), JointLimits.maxDeg(m.joint()));
+        }, WebotsJoints.names().toString());
+        return new TextMotion(name, source, t.joints(), t.poseNames(), t.timesMs(), t.posesDeg());
+    }
+
+    /**
+     * A header name resolved to a robot's joint: the joint, the sign that turns the file's angle into the
+     * simulator's, the name errors give for it, and its range on the simulator in degrees.
+     */
+    public record Column<J>(J joint, int sign, String field, double minDeg, double maxDeg) {}
+
+    /** A parsed motion table: the header's joints, and per pose its name, time (ms) and targets (degrees). */
+    public record Table<J>(List<J> joints, List<String> poseNames, int[] timesMs, double[][] posesDeg) {}
+
+    /**
+     * Reads a Webots text motion for any robot: {@code columns} resolves a header name (null: unknown, and
+     * {@code known} lists the names in the error). Used for the Nao here and for the T1 (motion.t1.T1MotionLoader).
+     */
+    public static <J> Table<J> read(String source, Reader reader, Function<String, Column<J>> columns, String known)
+            throws MotionFileException, IOException {
         BufferedReader in = reader instanceof BufferedReader b ? b : new BufferedReader(reader);
         String line = in.readLine();
         int lineNo = 1;
@@ -55,11 +79,10 @@ public final class TextMotionLoader {
             throw new MotionFileException(source, 1, null, "header", "the first line must be " + MAGIC + ", found '" + abbreviate(line) + "'", null);
         }
         String headerRest = line.strip().substring(MAGIC.length());
-        List<Joint> joints = null;
-        List<Integer> signs = new ArrayList<>();
+        List<Column<J>> header = null;
         if (!headerRest.isEmpty()) {
             if (headerRest.charAt(0) != ',') throw new MotionFileException(source, 1, null, "header", "expected ',' after " + MAGIC, null);
-            joints = header(source, 1, headerRest.substring(1), signs);
+            header = header(source, 1, headerRest.substring(1), columns, known);
         }
 
         List<String> poseNames = new ArrayList<>();
@@ -69,27 +92,26 @@ public final class TextMotionLoader {
             lineNo++;
             String s = line.strip();
             if (s.isEmpty() || s.startsWith("#")) continue;
-            if (joints == null) {
-                joints = header(source, lineNo, s, signs);
+            if (header == null) {
+                header = header(source, lineNo, s, columns, known);
                 continue;
             }
             String[] f = s.split(",", -1);
             String poseName = f.length > 1 ? f[1].strip() : "#" + (poses.size() + 1);
             String part = "pose '" + poseName + "'";
-            if (f.length != joints.size() + 2) {
-                throw new MotionFileException(source, lineNo, part, null, "has " + Math.max(0, f.length - 2) + " joint values, the header lists " + joints.size(), null);
+            if (f.length != header.size() + 2) {
+                throw new MotionFileException(source, lineNo, part, null, "has " + Math.max(0, f.length - 2) + " joint values, the header lists " + header.size(), null);
             }
             int t = time(source, lineNo, part, f[0].strip());
             if (!times.isEmpty() && t <= times.get(times.size() - 1)) {
                 throw new MotionFileException(source, lineNo, part, "time", f[0].strip() + " does not come after the previous pose's time", null);
             }
-            double[] pose = new double[joints.size()];
-            for (int k = 0; k < joints.size(); k++) {
-                Joint j = joints.get(k);
-                String field = j.perceptorName();
+            double[] pose = new double[header.size()];
+            for (int k = 0; k < header.size(); k++) {
+                Column<J> c = header.get(k);
                 String v = f[k + 2].strip();
                 if (v.equals("*")) {
-                    if (poses.isEmpty()) throw new MotionFileException(source, lineNo, part, field, "'*' (unchanged) needs an earlier pose", null);
+                    if (poses.isEmpty()) throw new MotionFileException(source, lineNo, part, c.field(), "'*' (unchanged) needs an earlier pose", null);
                     pose[k] = poses.get(poses.size() - 1)[k];
                     continue;
                 }
@@ -97,13 +119,13 @@ public final class TextMotionLoader {
                 try {
                     rad = Double.parseDouble(v);
                 } catch (NumberFormatException e) {
-                    throw new MotionFileException(source, lineNo, part, field, "'" + v + "' is not a number of radians", null);
+                    throw new MotionFileException(source, lineNo, part, c.field(), "'" + v + "' is not a number of radians", null);
                 }
-                if (!Double.isFinite(rad)) throw new MotionFileException(source, lineNo, part, field, "'" + v + "' is not finite", null);
-                double deg = signs.get(k) * Math.toDegrees(rad);
-                if (!JointLimits.contains(j, deg)) {
-                    throw new MotionFileException(source, lineNo, part, field, v + " rad is " + round(deg) + " deg on the simulator's joint, outside its range ["
-                            + JointLimits.minDeg(j) + ", " + JointLimits.maxDeg(j) + "]", null);
+                if (!Double.isFinite(rad)) throw new MotionFileException(source, lineNo, part, c.field(), "'" + v + "' is not finite", null);
+                double deg = c.sign() * Math.toDegrees(rad);
+                if (deg < c.minDeg() - 1e-9 || deg > c.maxDeg() + 1e-9) {
+                    throw new MotionFileException(source, lineNo, part, c.field(), v + " rad is " + round(deg) + " deg on the simulator's joint, outside its range ["
+                            + round(c.minDeg()) + ", " + round(c.maxDeg()) + "]", null);
                 }
                 pose[k] = deg;
             }
@@ -111,24 +133,25 @@ public final class TextMotionLoader {
             times.add(t);
             poses.add(pose);
         }
-        if (joints == null) throw new MotionFileException(source, lineNo, null, "header", "no joint header line", null);
+        if (header == null) throw new MotionFileException(source, lineNo, null, "header", "no joint header line", null);
         if (poses.isEmpty()) throw new MotionFileException(source, lineNo, null, "poses", "no pose lines", null);
-        return new TextMotion(name, source, joints, poseNames, times.stream().mapToInt(Integer::intValue).toArray(), poses.toArray(new double[0][]));
+        return new Table<>(header.stream().map(Column::joint).toList(), poseNames,
+                times.stream().mapToInt(Integer::intValue).toArray(), poses.toArray(new double[0][]));
     }
 
-    private static List<Joint> header(String source, int lineNo, String text, List<Integer> signs) throws MotionFileException {
-        List<Joint> joints = new ArrayList<>();
-        Set<Joint> seen = EnumSet.noneOf(Joint.class);
+    private static <J> List<Column<J>> header(String source, int lineNo, String text, Function<String, Column<J>> columns, String known)
+            throws MotionFileException {
+        List<Column<J>> out = new ArrayList<>();
+        Set<J> seen = new HashSet<>();
         for (String raw : text.split(",", -1)) {
             String n = raw.strip();
             if (n.isEmpty()) throw new MotionFileException(source, lineNo, null, "header", "empty joint name in the header", null);
-            WebotsJoints.Mapping m = WebotsJoints.byWebotsName(n);
-            if (m == null) throw new MotionFileException(source, lineNo, null, "header/" + n, "unknown joint '" + n + "' (known: " + WebotsJoints.names() + ")", null);
-            if (!seen.add(m.joint())) throw new MotionFileException(source, lineNo, null, "header/" + n, "joint listed twice", null);
-            joints.add(m.joint());
-            signs.add(m.sign());
+            Column<J> c = columns.apply(n);
+            if (c == null) throw new MotionFileException(source, lineNo, null, "header/" + n, "unknown joint '" + n + "' (known: " + known + ")", null);
+            if (!seen.add(c.joint())) throw new MotionFileException(source, lineNo, null, "header/" + n, "joint listed twice", null);
+            out.add(c);
         }
-        return joints;
+        return out;
     }
 
     private static int time(String source, int lineNo, String part, String s) throws MotionFileException {
