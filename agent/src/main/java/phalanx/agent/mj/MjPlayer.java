@@ -32,7 +32,14 @@ public final class MjPlayer {
                     + field.name() + " rule book");
             return 2;
         }
-        Outcome out = play(o, new MjRuntime(o.team(), unum, field));
+        MjRuntime runtime;
+        try {
+            runtime = new MjRuntime(o.team(), unum, field, phalanx.agent.Player.teamKey(o.team()), o.motions().resolve("t1"));
+        } catch (phalanx.motion.MotionFileException e) {
+            System.err.println("phalanx-player: bad motion file: " + e.getMessage());
+            return 2;
+        }
+        Outcome out = play(o, runtime);
         String msg = "phalanx-player " + o.unum() + " (mj): " + out.reason() + " after " + out.cycles() + " cycles ("
                 + out.malformed() + " malformed messages skipped)";
         LOG.info(msg);

@@ -11,8 +11,13 @@ import phalanx.motion.t1.JointCommand;
 import phalanx.model.robot.T1Model;
 import phalanx.motion.t1.T1Gait;
 import phalanx.motion.t1.T1GaitConfig;
+import phalanx.model.robot.T1Joints;
+import phalanx.motion.MotionFileException;
+import phalanx.motion.t1.T1GetUp;
 import phalanx.motion.t1.T1Kick;
 import phalanx.motion.t1.T1KickConfig;
+
+import java.nio.file.Path;
 
 import java.util.List;
 import java.util.logging.Logger;
@@ -42,11 +47,16 @@ public final class MjRuntime {
     private final MjTeamTalk talk;
     private long cycles, malformed, beams;
 
-    public MjRuntime(String team, int unum, MjField field) {
-        this(team, unum, field, Player.teamKey(team));
+    private final T1GetUp getUp;
+
+    /** With the get-ups of motions/t1 (the project root's). */
+    public MjRuntime(String team, int unum, MjField field) throws MotionFileException {
+        this(team, unum, field, Player.teamKey(team), Path.of("motions", "t1"));
     }
 
-    public MjRuntime(String team, int unum, MjField field, TeamKey key) {
+    /** motionDir: the folder of get_up_front.motion and get_up_back.motion; a bad file stops the start here. */
+    public MjRuntime(String team, int unum, MjField field, TeamKey key, Path motionDir) throws MotionFileException {
+        this.getUp = T1GetUp.load(motionDir, T1GaitConfig.balanced().dt());
         this.unum = unum;
         this.talk = new MjTeamTalk(key, unum, field.players());
         this.world = new MjWorld(team);
@@ -71,7 +81,7 @@ public final class MjRuntime {
         talk.hear(p, world.time());
         boolean nearest = world.self() != null && world.ball() != null && talk.nearestToBall(world.self(), world.ball(), world.time());
         MjBehaviour.Intent intent = behaviour.decide(world, nearest);
-        List<JointCommand> joints = motion(intent);
+        List<JointCommand> joints = motion(intent, p);
         for (JointCommand j : joints) actions.joint(j.actuator(), j.qDeg(), j.dqDeg(), j.kp(), j.kd(), j.tau());
         String reply = actions.build();
         last = reply;   // what a malformed message is answered with: never a say again (it would be a replay)
@@ -113,7 +123,17 @@ public final class MjRuntime {
      * stepping on the spot (at WAIT_VX), for a step's end with the feet back at their stance (the gait's pose is
      * then about the stand pose), at most KICK_WAIT_S, and then stands KICK_SETTLE_S.
      */
-    private List<JointCommand> motion(MjBehaviour.Intent intent) {
+    private List<JointCommand> motion(MjBehaviour.Intent intent, MjPerception p) {
+        if (!world.beamAllowed() && p.quat() != null) {
+            List<JointCommand> g = getUp.update(p.quat(), p.gyro(), a -> measuredDeg(p, a), world.time());
+            if (g != null) {
+                kick.stop();
+                pendingKick = null;
+                settleUntil = 0;
+                standUntil = world.time() + STAND_AFTER_GETUP_S;
+                return g;
+            }
+        }
         if (world.beamAllowed() || !world.upright()) {
             kick.stop();
             pendingKick = null;
@@ -154,6 +174,14 @@ public final class MjRuntime {
         return gait.next(WAIT_VX, 0, 0);
     }
 
+    /** Still after a get-up, s, before the gait walks: the bench's get-up trial stands 3 s after it (motion/README.md). */
+    static final double STAND_AFTER_GETUP_S = 1.0;
+
+    private static double measuredDeg(MjPerception p, String actuator) {
+        double[] v = p.joints().get(T1Joints.byActuator(actuator).perceptor());
+        return v == null ? 0 : v[0];
+    }
+
     private boolean feetTogether() {
         double[] lift = gait.lifts(), off = gait.footOffsets();
         double most = 0;
@@ -164,6 +192,8 @@ public final class MjRuntime {
     /** Kicks started and kicks the motion refused, so far. */
     public long kicks() { return kicks; }
     public long kicksRefused() { return kicksRefused; }
+    /** Get-ups started so far. */
+    public long getUps() { return getUp.getUps(); }
 
     public int unum() { return unum; }
     public MjWorld world() { return world; }

@@ -44,6 +44,53 @@ class MjRuntimeTest {
         assertEquals(4, r.malformed(), "the empty message is a valid (empty) perception, the other four are not");
     }
 
+    /** A recorded message in play with the torso lying (quaternion w x y z), still, every joint at 0. */
+    private static String lying(String recorded, String quat) {
+        return recorded.replace("(pm BeforeKickOff)", "(pm PlayOn)").replaceAll("\\(q [^)]*\\)", "(q " + quat + ")")
+                .replaceAll("\\(rt [^)]*\\)", "(rt 0 0 0)");
+    }
+
+    /** The first cycle's command for an actuator: q in degrees. */
+    private static double commandDeg(String reply, String actuator) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\(" + actuator + " (-?[0-9.]+)").matcher(reply);
+        assertTrue(m.find(), actuator + " in " + reply);
+        return Double.parseDouble(m.group(1));
+    }
+
+    @Test
+    void aPlayerLyingInPlayGetsUpWithTheMotionForTheSideItLiesOn() throws Exception {
+        String line = Files.readAllLines(RECORDING).get(10).replaceAll("\\(ax [^)]*\\)", "(ax 0)");
+        var dir = Path.of("motions", "t1");
+        for (String side : List.of("front", "back")) {
+            MjRuntime r = new MjRuntime("Phalanx", 2, MjField.SSIM);
+            // face down: the torso's x axis points down (pitched +90 deg about y); face up: -90
+            String reply = r.update(lying(line, side.equals("front") ? "0.7071 0 0.7071 0" : "0.7071 0 -0.7071 0"));
+            assertEquals(1, r.getUps(), side + ": lying still in play starts a get-up at once");
+            var m = phalanx.motion.t1.T1MotionLoader.load(dir.resolve("get_up_" + side + ".motion"));
+            var player = new phalanx.motion.t1.T1MotionPlayer(0.02, phalanx.motion.t1.T1MotionPlayer.Gains.DEFAULT);
+            player.start(m, a -> 0);
+            var first = player.next().stream().filter(c -> c.actuator().equals("lle1")).findFirst().orElseThrow();
+            assertEquals(first.qDeg(), commandDeg(reply, "lle1"), 0.01, side + ": the hip follows get_up_" + side + ".motion");
+            int cycles = (int) Math.round(m.seconds() / 0.02);
+            for (int i = 1; i < cycles; i++) r.update(lying(line, "0.7071 0 0.7071 0"));
+            assertEquals(1, r.getUps(), "one get-up plays to its end");
+            r.update(lying(line, "0.7071 0 0.7071 0"));
+            assertEquals(2, r.getUps(), "still down at its end: the next one starts");
+        }
+        MjRuntime up = new MjRuntime("Phalanx", 2, MjField.SSIM);
+        up.update(lying(line, "0.7071 0 0 -0.7071"));
+        assertEquals(0, up.getUps(), "upright (turned about z only): no get-up");
+    }
+
+    @Test
+    void aBadGetUpFileStopsThePlayerAtItsStartWithItsName(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("get_up_front.motion"), "#WEBOTS_MOTION,V1.0\nLeft_Knee_Pitch\n00:00:100,bend,-1\n");
+        Files.copy(Path.of("motions", "t1", "get_up_back.motion"), dir.resolve("get_up_back.motion"));
+        var e = assertThrows(phalanx.motion.MotionFileException.class,
+                () -> new MjRuntime("Phalanx", 2, MjField.SSIM, phalanx.agent.Player.teamKey("Phalanx"), dir));
+        assertTrue(e.getMessage().contains("get_up_front.motion") && e.getMessage().contains("Left_Knee_Pitch"), e.getMessage());
+    }
+
     @Test
     void aUniformNumberBeyondTheRuleBookIsRefusedBeforeConnecting() {
         int status = MjPlayer.run(phalanx.agent.PlayerOptions.parse("--server", "mj", "--unum", "9", "--connect-timeout", "0"));
