@@ -125,7 +125,10 @@ public final class MjRuntime {
      */
     private List<JointCommand> motion(MjBehaviour.Intent intent, MjPerception p) {
         if (!world.beamAllowed() && p.quat() != null) {
+            long before = getUp.getUps();
             List<JointCommand> g = getUp.update(p.quat(), p.gyro(), a -> measuredDeg(p, a), world.time());
+            if (getUp.getUps() > before)
+                LOG.info(String.format(java.util.Locale.ROOT, "get-up %d (%s) at %.2f s", getUp.getUps(), getUp.playing(), world.time()));
             if (g != null) {
                 kick.stop();
                 pendingKick = null;

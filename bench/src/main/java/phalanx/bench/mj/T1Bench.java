@@ -11,9 +11,7 @@ import phalanx.motion.t1.T1Gait;
 import phalanx.motion.t1.T1GaitConfig;
 import phalanx.motion.t1.T1Kick;
 import phalanx.motion.t1.T1KickConfig;
-import phalanx.motion.t1.T1Motion;
-import phalanx.motion.t1.T1MotionLoader;
-import phalanx.motion.t1.T1MotionPlayer;
+import phalanx.motion.t1.T1GetUp;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -23,7 +21,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -314,17 +311,18 @@ public final class T1Bench {
                 dist.stream().mapToDouble(d -> d).max().orElse(Double.NaN), falls, (System.nanoTime() - wall) / 1e9);
     }
 
-    /** One get-up of the get-up trial: which side it lay on, whether it stood at the end, its time. */
-    record GetUpResult(String lay, String motion, boolean stood, double seconds, double torsoZ, String note) {
+    /** One get-up of the get-up trial: how it lay, the get-ups it took, whether it stood, how long that took. */
+    record GetUpResult(String lay, String side, long getUps, boolean stood, double seconds, String note) {
         String line(int i) {
-            return String.format(Locale.ROOT, "get-up %2d  lying on its %s  %s  %s  %.2f s  torso z %.2f m%s", i, lay, motion,
-                    stood ? "STOOD" : "failed", seconds, torsoZ, note.isEmpty() ? "" : "  (" + note + ")");
+            return String.format(Locale.ROOT, "get-up %2d  %-10s lay on its %-10s  %s  after %d get-up%s, up %.2f s after it lay still%s", i, lay, side,
+                    stood ? "STOOD" : "failed", getUps, getUps == 1 ? "" : "s", seconds, note.isEmpty() ? "" : "  (" + note + ")");
         }
     }
 
-    static final double LIE_SETTLE_S = 1.5;     // lying still after the drop before the get-up starts
-    static final double STAND_AFTER_S = 3.0;    // standing after the get-up; stood = upright through it
+    static final double LIE_SETTLE_S = 1.0;     // after the drop, before the agent's get-up logic runs
+    static final double STAND_AFTER_S = 3.0;    // standing after a get-up; stood = upright (tilt < 30 deg) through it
     static final double UPRIGHT_TILT_DEG = 30;
+    static final double GIVE_UP_S = 15;         // the referee takes a field player off after 15 s on the ground
 
     /** Lying on the front (torso x axis down), back (x up) or a side, from the torso's attitude. */
     static String lyingOn(double[] q) {
@@ -336,39 +334,54 @@ public final class T1Bench {
     }
 
     /**
-     * The get-up trial: beam and stand, then the monitor lays the robot down ({@code (agent ... (move3d x y z q))}:
-     * joints to zero, face down for "front", face up for "back", a seeded random heading and up to 10 deg of roll),
-     * it lies LIE_SETTLE_S holding the stand pose, plays the get-up for the side it lies on (motions/t1/
-     * get_up_front|back.motion) once, stands STAND_AFTER_S, and has stood when the torso was upright (tilt under
-     * 30 deg) through that time.
+     * One get-up as the agent does it ({@link T1GetUp}, the player's class): beam and stand, then lay the robot
+     * down. "front"/"back": the monitor places it ({@code (agent ... (move3d x y z q))}: joints to zero, face down or
+     * up, a seeded random heading and up to 10 deg of roll) and it lies LIE_SETTLE_S. "fall-front"/"fall-back": it
+     * falls by itself from the stand (knees straight and toes down tip it forward; hips and knees bent, it sits down
+     * and falls backwards) until the torso is tilted past 60 deg. Then T1GetUp runs each cycle (it waits until the robot lies
+     * still, plays the get-up for the side, and again if it is still down), the gait's stand with feedback between;
+     * it stood when upright for STAND_AFTER_S after a get-up; given up after GIVE_UP_S.
      */
-    GetUpResult getUp(T1Gait gait, Map<String, T1Motion> motions, String lay, java.util.Random rnd) throws IOException {
-        if (!reset(gait, -10, 0, 0)) return new GetUpResult(lay, "-", false, 0, p.pos()[2], "fell while standing before");
+    GetUpResult getUp(T1Gait gait, T1GetUp getUp, String lay, java.util.Random rnd) throws IOException {
+        if (!reset(gait, -10, 0, 0)) return new GetUpResult(lay, "-", 0, false, 0, "fell while standing before");
         double yaw = Math.toRadians(360 * rnd.nextDouble()), roll = Math.toRadians(10 * (2 * rnd.nextDouble() - 1));
-        double pitch = Math.toRadians(lay.equals("front") ? 90 : -90);
-        double[] q = mul(axis(0, 0, 1, yaw), mul(axis(0, 1, 0, pitch), axis(1, 0, 0, roll)));
-        server.command(String.format(Locale.ROOT, "(agent (unum 2) (team Phalanx) (move3d -10 0 0.35 %.5f %.5f %.5f %.5f))", q[0], q[1], q[2], q[3]));
-        for (int i = 0; i < LIE_SETTLE_S / 0.02; i++) cycle(joints(gait.stand()));
+        if (lay.startsWith("fall")) {
+            boolean back = lay.equals("fall-back");   // sitting down backwards; knees straight and toes down tips it forward
+            List<JointCommand> tip = new ArrayList<>();
+            for (JointCommand j : gait.stand()) {
+                double q = j.qDeg();
+                if (j.actuator().matches("[lr]le1")) q = back ? -90 : 0;
+                if (j.actuator().matches("[lr]le4")) q = back ? 90 : 0;
+                if (j.actuator().matches("[lr]le5")) q = back ? -10 : 20;
+                tip.add(new JointCommand(j.actuator(), q, 0, j.kp(), j.kd(), 0));
+            }
+            for (int i = 0; i < 150 && tiltDeg(p.quat()) < 60; i++) cycle(joints(tip));
+        } else {
+            double pitch = Math.toRadians(lay.equals("front") ? 90 : -90);
+            double[] q = mul(axis(0, 0, 1, yaw), mul(axis(0, 1, 0, pitch), axis(1, 0, 0, roll)));
+            server.command(String.format(Locale.ROOT, "(agent (unum 2) (team Phalanx) (move3d -10 0 0.35 %.5f %.5f %.5f %.5f))", q[0], q[1], q[2], q[3]));
+            for (int i = 0; i < LIE_SETTLE_S / 0.02; i++) cycle(joints(gait.stand()));
+        }
         String side = lyingOn(p.quat());
-        T1Motion m = motions.get(side.startsWith("front") ? "get_up_front" : "get_up_back");
-        T1MotionPlayer player = new T1MotionPlayer(0.02, T1MotionPlayer.Gains.DEFAULT);
-        MjPerception now = p;
-        player.start(m, a -> measuredDeg(now, a));
-        double t = 0;
-        while (player.active()) {
-            cycle(joints(player.next()));
-            t += 0.02;
-            if (verbose && Math.round(t / 0.02) % KICK_TRACE_EVERY == 0) trace(player.poseName(), t);
-        }
+        String placed = lay.startsWith("fall") ? "" : String.format(Locale.ROOT, "placed heading %.0f deg, roll %.1f deg", Math.toDegrees(yaw), Math.toDegrees(roll));
+        long before = getUp.getUps();
+        double t = 0, upSince = -1, stillAt = -1;
         gait.feedback(0, 0, 0, 0);
-        boolean stood = true;
-        for (int i = 0; i < STAND_AFTER_S / 0.02; i++) {
-            feed(gait);
-            cycle(joints(gait.stand()));
-            if (verbose && i % 10 == 0) trace("stand", t + i * 0.02);
-            stood &= tiltDeg(p.quat()) < UPRIGHT_TILT_DEG;
+        while (t < GIVE_UP_S) {
+            MjPerception now = p;
+            List<JointCommand> g = getUp.update(now.quat(), now.gyro(), a -> measuredDeg(now, a), t);
+            if (g != null && stillAt < 0) stillAt = t;
+            if (g == null) feed(gait);
+            cycle(joints(g != null ? g : gait.stand()));
+            t += 0.02;
+            if (verbose && Math.round(t / 0.02) % KICK_TRACE_EVERY == 0) trace(g != null ? getUp.playing() : "stand", t);
+            boolean up = g == null && getUp.getUps() > before && tiltDeg(p.quat()) < UPRIGHT_TILT_DEG;
+            if (!up) upSince = -1;
+            else if (upSince < 0) upSince = t;
+            if (upSince >= 0 && t - upSince >= STAND_AFTER_S)
+                return new GetUpResult(lay, side, getUp.getUps() - before, true, upSince - stillAt, placed);
         }
-        return new GetUpResult(side, m.name(), stood, m.seconds(), p.pos()[2], "");
+        return new GetUpResult(lay, side, getUp.getUps() - before, false, t, "still down after " + GIVE_UP_S + " s" + (placed.isEmpty() ? "" : "; " + placed));
     }
 
     static double measuredDeg(MjPerception p, String actuator) {
@@ -386,18 +399,24 @@ public final class T1Bench {
                 a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1], a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]};
     }
 
-    void getUpTrial(T1Gait gait, Map<String, T1Motion> motions, int n, String lying) throws IOException {
-        java.util.Random rnd = new java.util.Random(20);
-        int stood = 0;
+    void getUpTrial(T1Gait gait, T1GetUp getUp, int n, String lying, long seed) throws IOException {
+        java.util.Random rnd = new java.util.Random(seed);
+        List<String> lays = List.of((lying.equals("both") ? "front,back" : lying).split(","));
+        int first = 0, stood = 0;
+        List<Double> times = new ArrayList<>();
         long wall = System.nanoTime();
         for (int i = 1; i <= n; i++) {
-            String lay = lying.equals("both") ? (i % 2 == 1 ? "front" : "back") : lying;
-            GetUpResult r = getUp(gait, motions, lay, rnd);
+            GetUpResult r = getUp(gait, getUp, lays.get((i - 1) % lays.size()), rnd);
             System.out.println(r.line(i));
             System.out.flush();
-            if (r.stood()) stood++;
+            if (r.stood()) {
+                stood++;
+                times.add(r.seconds());
+                if (r.getUps() == 1) first++;
+            }
         }
-        System.out.printf(Locale.ROOT, "get-up summary: %d of %d stood at the first try (%s)   (%.0f s wall)%n", stood, n, lying, (System.nanoTime() - wall) / 1e9);
+        System.out.printf(Locale.ROOT, "get-up summary: %d of %d stood at the first try, %d in the end (%s); up after median %.2f s   (%.0f s wall)%n",
+                first, n, stood, lying, median(times), (System.nanoTime() - wall) / 1e9);
     }
 
     static double median(List<Double> v) {
@@ -419,6 +438,7 @@ public final class T1Bench {
         String foot = "right";
         String lying = "both";
         int getups = 10;
+        long seed = 20;
         Path motionDir = Path.of("motions", "t1");
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
@@ -450,10 +470,12 @@ public final class T1Bench {
                 }
                 case "--lying" -> {
                     lying = args[++i];
-                    if (!lying.equals("front") && !lying.equals("back") && !lying.equals("both"))
-                        throw new IllegalArgumentException("--lying front|back|both");
+                    for (String l : lying.split(","))
+                        if (!List.of("front", "back", "both", "fall-front", "fall-back").contains(l))
+                            throw new IllegalArgumentException("--lying front|back|both|fall-front|fall-back, or a comma list of them");
                 }
                 case "--getups" -> getups = Integer.parseInt(args[++i]);
+                case "--seed" -> seed = Long.parseLong(args[++i]);
                 case "--motions" -> motionDir = Path.of(args[++i]);
                 case "--verbose" -> verbose = true;
                 case "-h", "--help" -> {
@@ -469,8 +491,10 @@ public final class T1Bench {
                             its direction error and a fall; --kick changes
                             T1KickConfig.defaults(), e.g. --kick swing.kickX=0.25 or --kick legKp=250.
                             getup (not in all): --getups N (10) times laid down by the monitor, --lying front|back|both
-                            (both: alternating), get_up_front|back.motion from --motions DIR (motions/t1) played once;
-                            per get-up whether it stood.""");
+                            (both: alternating), or fallen by itself, --lying fall-front|fall-back (a comma list: in turn;
+                            --seed N (20) for the placements); the agent's T1GetUp with
+                            get_up_front|back.motion from --motions DIR (motions/t1) gets it up; per get-up whether it stood,
+                            at the first try, and how long after lying still.""");
                     return;
                 }
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
@@ -488,6 +512,9 @@ public final class T1Bench {
         for (int attempt = 1; ; attempt++) {
             Path dir = Files.createTempDirectory("t1bench");
             MjServerProcess server = MjServerProcess.start(exe.get(), new MjServerProcess.Settings(port, port + 1, true, false), dir);
+            // a bench stopped from outside (a search that kills a candidate, Ctrl-C) must not leave its server holding the ports
+            Thread hook = new Thread(server::stop, "t1bench-stop-server");
+            Runtime.getRuntime().addShutdownHook(hook);
             try {
                 if (!server.awaitReady(120_000)) throw new IOException("rcssservermj not ready: " + Files.readString(server.log()));
                 try (Socket s = new Socket("127.0.0.1", port)) {
@@ -507,10 +534,7 @@ public final class T1Bench {
                     for (String t : trials) {
                         T1Gait gait = new T1Gait(config);
                         if (t.equals("getup")) {
-                            Map<String, T1Motion> ms = new java.util.HashMap<>();
-                            for (String name : List.of("get_up_front", "get_up_back"))
-                                ms.put(name, T1MotionLoader.load(motionDir.resolve(name + ".motion")));
-                            b.getUpTrial(gait, ms, getups, lying);
+                            b.getUpTrial(gait, T1GetUp.load(motionDir, 0.02), getups, lying, seed);
                             continue;
                         }
                         if (t.equals("kick")) {
@@ -532,6 +556,11 @@ public final class T1Bench {
                 }
             } finally {
                 server.stop();
+                try {
+                    Runtime.getRuntime().removeShutdownHook(hook);
+                } catch (IllegalStateException shuttingDown) {
+                    // the hook is running: it stops the server itself
+                }
             }
         }
         int falls = results.stream().mapToInt(Result::falls).sum();
