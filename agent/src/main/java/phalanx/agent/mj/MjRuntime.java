@@ -73,6 +73,11 @@ public final class MjRuntime {
             if (++malformed <= MALFORMED_LOGGED) LOG.warning("skipped a malformed message (" + e.getMessage() + ")");
             return last;
         }
+        if (p.quat() != null && !unitQuaternion(p.quat())) {
+            // a zero or non-finite torso quaternion would turn every attitude and position into NaN joint commands
+            if (++malformed <= MALFORMED_LOGGED) LOG.warning("skipped a message whose torso quaternion is not a rotation: " + java.util.Arrays.toString(p.quat()));
+            return last;
+        }
         world.update(p);
         if (p.quat() != null && p.gyro() != null) {
             double[] rp = T1Model.rollPitch(p.quat());
@@ -95,6 +100,12 @@ public final class MjRuntime {
             reply = MjActions.beam(intent.beam().x(), intent.beam().y() * side, intent.beam().thetaDeg()) + reply;
         }
         return reply;
+    }
+
+    static boolean unitQuaternion(double[] q) {
+        double n = 0;
+        for (double v : q) n += v * v;
+        return Double.isFinite(n) && Math.abs(n - 1) < 0.1;
     }
 
     /** Longest wait for the gait's feet to come together before a kick, s; then the kick is dropped. */

@@ -42,6 +42,11 @@ class MjRuntimeTest {
             assertEquals(good, reply, "the last joint commands again for '" + broken + "'");
         }
         assertEquals(4, r.malformed(), "the empty message is a valid (empty) perception, the other four are not");
+        for (String q : List.of("0 0 0 0", "NaN 0 0 1", "2 0 0 0")) {
+            String reply = r.update(line.replaceAll("\\(q [^)]*\\)", "(q " + q + ")"));
+            assertEquals(good, reply, "a torso quaternion (" + q + ") that is no rotation: the last commands again");
+        }
+        assertEquals(7, r.malformed(), "and each is counted");
     }
 
     /** A recorded message in play with the torso lying (quaternion w x y z), still, every joint at 0. */
