@@ -41,7 +41,8 @@ public final class MjPlayer {
         }
         Outcome out = play(o, runtime);
         String msg = "phalanx-player " + o.unum() + " (mj): " + out.reason() + " after " + out.cycles() + " cycles ("
-                + out.malformed() + " malformed messages skipped)";
+                + out.malformed() + " malformed messages skipped; " + runtime.getUps() + " get-ups, " + runtime.getUpRetries()
+                + " of them retries; " + runtime.kicks() + " kicks)";
         LOG.info(msg);
         System.err.println(msg);
         return out.status();

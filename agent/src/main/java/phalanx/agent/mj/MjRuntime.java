@@ -206,8 +206,9 @@ public final class MjRuntime {
     /** Kicks started and kicks the motion refused, so far. */
     public long kicks() { return kicks; }
     public long kicksRefused() { return kicksRefused; }
-    /** Get-ups started so far. */
+    /** Get-ups started so far, and of those the retries (the one before ended still down). */
     public long getUps() { return getUp.getUps(); }
+    public long getUpRetries() { return getUp.retries(); }
 
     public int unum() { return unum; }
     public MjWorld world() { return world; }

@@ -81,6 +81,7 @@ class MjRuntimeTest {
             assertEquals(1, r.getUps(), "one get-up plays to its end");
             r.update(lying(line, "0.7071 0 0.7071 0"));
             assertEquals(2, r.getUps(), "still down at its end: the next one starts");
+            assertEquals(1, r.getUpRetries(), "and counts as a retry");
         }
         MjRuntime up = new MjRuntime("Phalanx", 2, MjField.SSIM);
         up.update(lying(line, "0.7071 0 0 -0.7071"));

@@ -29,7 +29,8 @@ public final class T1GetUp {
     private final T1MotionPlayer player;
     private State state = State.UP;
     private double lyingSince;
-    private long getUps;
+    private long getUps, retries;
+    private boolean failed;   // the last get-up ended with the robot still down
 
     public T1GetUp(T1Motion front, T1Motion back, Config config, double dt) {
         this.front = front;
@@ -49,6 +50,9 @@ public final class T1GetUp {
     /** Get-ups started so far. */
     public long getUps() { return getUps; }
 
+    /** Of those, the ones started because the one before ended with the robot still down. */
+    public long retries() { return retries; }
+
     /** The motion playing, or null. */
     public String playing() { return state == State.GETTING_UP ? player.motion().name() : null; }
 
@@ -61,11 +65,15 @@ public final class T1GetUp {
         if (state == State.GETTING_UP) {
             List<JointCommand> out = player.next();
             if (!player.active()) state = fallen(quat) ? State.LYING : State.UP;
-            if (state == State.LYING) lyingSince = time;
+            if (state == State.LYING) {
+                lyingSince = time;
+                failed = true;
+            }
             return out;
         }
         if (!fallen(quat)) {
             state = State.UP;
+            failed = false;
             return null;
         }
         if (state == State.UP) {
@@ -76,6 +84,8 @@ public final class T1GetUp {
         if (!still && time - lyingSince < c.maxWaitS()) return null;
         state = State.GETTING_UP;
         getUps++;
+        if (failed) retries++;
+        failed = false;
         player.start(faceDown(quat) ? front : back, measuredDeg);
         return player.next();
     }
