@@ -191,7 +191,8 @@ public final class MjRuntime {
     /** Still after a get-up, s, before the gait walks: the bench's get-up trial stands 3 s after it (motion/README.md). */
     static final double STAND_AFTER_GETUP_S = 1.0;
 
-    private static double measuredDeg(MjPerception p, String actuator) {
+    /** A joint's measured angle in the perception, degrees, by actuator name (0 when the perception lacks it). */
+    public static double measuredDeg(MjPerception p, String actuator) {
         double[] v = p.joints().get(T1Joints.byActuator(actuator).perceptor());
         return v == null ? 0 : v[0];
     }

@@ -369,7 +369,7 @@ public final class T1Bench {
         gait.feedback(0, 0, 0, 0);
         while (t < GIVE_UP_S) {
             MjPerception now = p;
-            List<JointCommand> g = getUp.update(now.quat(), now.gyro(), a -> measuredDeg(now, a), t);
+            List<JointCommand> g = getUp.update(now.quat(), now.gyro(), a -> phalanx.agent.mj.MjRuntime.measuredDeg(now, a), t);
             if (g != null && stillAt < 0) stillAt = t;
             if (g == null) feed(gait);
             cycle(joints(g != null ? g : gait.stand()));
@@ -382,11 +382,6 @@ public final class T1Bench {
                 return new GetUpResult(lay, side, getUp.getUps() - before, true, upSince - stillAt, placed);
         }
         return new GetUpResult(lay, side, getUp.getUps() - before, false, t, "still down after " + GIVE_UP_S + " s" + (placed.isEmpty() ? "" : "; " + placed));
-    }
-
-    static double measuredDeg(MjPerception p, String actuator) {
-        double[] v = p.joints().get(phalanx.model.robot.T1Joints.byActuator(actuator).perceptor());
-        return v == null ? 0 : v[0];
     }
 
     static double[] axis(double x, double y, double z, double a) {

@@ -1,5 +1,6 @@
 package phalanx.motion.t1;
 
+import phalanx.model.robot.T1Model;
 import phalanx.motion.MotionFileException;
 
 import java.nio.file.Path;
@@ -91,8 +92,7 @@ public final class T1GetUp {
     }
 
     boolean fallen(double[] q) {
-        double x = q[1], y = q[2];
-        return 1 - 2 * (x * x + y * y) < Math.cos(Math.toRadians(c.fallenTiltDeg()));
+        return T1Model.uprightness(q) < Math.cos(Math.toRadians(c.fallenTiltDeg()));
     }
 
     /** Whether the torso's forward (x) axis points down more than up: lying on the front. */

@@ -28,7 +28,7 @@ public final class T1MotionPlayer {
     private static final List<String> ACTUATORS = T1Joints.actuators();
 
     private final double dt;
-    private final Gains gains;
+    private final double[] kp = new double[ACTUATORS.size()], kd = new double[ACTUATORS.size()];
     private T1Motion motion;
     private final double[] start = new double[ACTUATORS.size()], prev = new double[ACTUATORS.size()];
     private int[] column;   // per actuator: its column in the motion, or -1
@@ -37,7 +37,10 @@ public final class T1MotionPlayer {
 
     public T1MotionPlayer(double dtSeconds, Gains gains) {
         this.dt = dtSeconds;
-        this.gains = gains;
+        for (int i = 0; i < ACTUATORS.size(); i++) {   // once here, not per joint per cycle
+            kp[i] = gains.kp(ACTUATORS.get(i));
+            kd[i] = gains.kd(ACTUATORS.get(i));
+        }
     }
 
     /** Starts a motion from the measured joint angles (degrees, by actuator name). */
@@ -77,22 +80,22 @@ public final class T1MotionPlayer {
         List<JointCommand> out = new ArrayList<>(ACTUATORS.size());
         for (int i = 0; i < ACTUATORS.size(); i++) {
             String a = ACTUATORS.get(i);
-            double q = column[i] < 0 ? start[i] : target(column[i], ms);
+            double q = column[i] < 0 ? start[i] : target(i, column[i], ms);
             double dq = active ? (q - prev[i]) / dt : 0;
             prev[i] = q;
-            out.add(new JointCommand(a, q, dq, gains.kp(a), gains.kd(a), 0));
+            out.add(new JointCommand(a, q, dq, kp[i], kd[i], 0));
         }
         return out;
     }
 
-    /** Column k's target at ms: linear between the poses around it, from the start angle before the first. */
-    private double target(int k, double ms) {
+    /** Actuator i's target (column k of the motion) at ms: linear between the poses around it, from its start angle before the first. */
+    private double target(int i, int k, double ms) {
         int[] times = motion.timesMs();
         double[][] poses = motion.posesDeg();
         if (ms >= times[times.length - 1]) return poses[times.length - 1][k];
         int p = 0;
         while (ms >= times[p]) p++;
-        double t0 = p == 0 ? 0 : times[p - 1], a = p == 0 ? start[ACTUATORS.indexOf(motion.actuators().get(k))] : poses[p - 1][k];
+        double t0 = p == 0 ? 0 : times[p - 1], a = p == 0 ? start[i] : poses[p - 1][k];
         double s = times[p] == t0 ? 1 : (ms - t0) / (times[p] - t0);
         return a + (poses[p][k] - a) * s;
     }
