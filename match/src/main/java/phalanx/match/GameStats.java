@@ -47,11 +47,23 @@ public final class GameStats {
     static final double KICK_OFF_FOUL_S = 1.0;
     /** A goal's shot is a kick that started at most this long before it (a 10 m roll at the slowest kick's speed). */
     static final double GOAL_SHOT_S = 10.0;
+    /**
+     * A torso this high is held up by the referee for a foul: SoccerRuleAspect::ClearPlayersAutomatic lifts the
+     * offender to 1.0 m and more for FoulHoldTime (0.5 s) before it moves him off the field (docs/protocol.md,
+     * "Charging and crowding"); a standing Nao's torso is at about 0.4 m.
+     */
+    static final double HELD_Z = 0.9;
+    /** The penalty area, from the goal line (naosoccersim.rb PenaltyLength 1.8, PenaltyWidth 3.9). */
+    static final double PENALTY_LENGTH = 1.8, PENALTY_HALF_WIDTH = 1.95;
+    /** More field players than this inside their own penalty area is illegal defence (MaxPlayersInsideOwnArea). */
+    static final int MAX_IN_OWN_AREA = 3;
 
     /** One team's figures. Times in seconds of game time. */
     public static final class TeamStats {
         public String name;
         public int goals, kicks, kicksOver8m, kicksUnder1_5m, shotsOnGoal, falls, relocated;
+        /** Fouls the referee took a player off for, by what the picture before showed (see {@link Foul.Kind}). */
+        public int foulsContact, foulsIncapable, foulsIllegalDefence;
         /** This team's kick-offs, and those of them the other side got a free kick from (docs/protocol.md, "Set pieces"). */
         public int kickOffs, kickOffFouls;
         public double possessionS, ownThirdS, middleS, opponentThirdS, lyingS;
@@ -97,6 +109,24 @@ public final class GameStats {
      * the ball was walked in) and the defence when the ball went in.
      */
     public record Goal(double time, Side scorer, KickEvent shot, Defence atGoal) {}
+
+    /**
+     * A player the referee held up for a foul: when, who, where he stood the picture before, the ball's distance, and the
+     * nearest opponent (distance, and whether that one was nearer the ball). The kind is read off that picture, as the
+     * server's own record of the foul does not reach the monitor: lying = incapable (on the ground 15 s or not standing
+     * 30 s), else one of more than three of his team's field players in his own penalty area = illegal defence, else
+     * contact (charging, or the third robot in a touch group).
+     */
+    public record Foul(double time, Side side, int unum, double x, double y, Kind kind, double ballDistance,
+                       double nearestOpponent, boolean opponentNearerBall) {
+        public enum Kind { CONTACT, INCAPABLE, ILLEGAL_DEFENCE }
+    }
+
+    private final java.util.List<Foul> foulEvents = new java.util.ArrayList<>();
+    private final double[][] lastZ = new double[2][12];
+
+    /** Every foul counted, in order. */
+    public java.util.List<Foul> fouls() { return java.util.List.copyOf(foulEvents); }
 
     private final java.util.List<KickEvent> kickEvents = new java.util.ArrayList<>();
     private final java.util.List<Goal> goalEvents = new java.util.ArrayList<>();
@@ -210,6 +240,10 @@ public final class GameStats {
                 double[] last = lastTorso[side.ordinal()][u];
                 if (p == null) { lastTorso[side.ordinal()][u] = null; continue; }
                 boolean lying = p.upZ() < LYING_UP_Z;
+                boolean held = p.z() >= HELD_Z;
+                if (last != null && held && lastZ[side.ordinal()][u] < HELD_Z && !beamsAllowed) foul(side, u, last, ball);
+                lastZ[side.ordinal()][u] = p.z();
+                if (held) continue;                       // in the air: neither a fall nor a torso near the ball
                 if (last != null) {
                     if (lying && !(last[2] < LYING_UP_Z)) ts.falls++;
                     if (!beamsAllowed && dt <= 0.1 && Math.hypot(p.x() - last[0], p.y() - last[1]) > RELOCATION_M) ts.relocated++;
@@ -243,6 +277,42 @@ public final class GameStats {
             endKick(ball);
         }
         lastBallSpeed = speed > TELEPORT_SPEED ? 0 : speed;
+    }
+
+    /** A foul of player {@code u}, classified by where and how he was in the picture before ({@code last}). */
+    private void foul(Side side, int u, double[] last, double[] ball) {
+        TeamStats ts = teams.get(side);
+        Foul.Kind kind;
+        if (last[2] < LYING_UP_Z) kind = Foul.Kind.INCAPABLE;
+        else if (u != 1 && insideOwnArea(side, last) && fieldPlayersInOwnArea(side) > MAX_IN_OWN_AREA) kind = Foul.Kind.ILLEGAL_DEFENCE;
+        else kind = Foul.Kind.CONTACT;
+        switch (kind) {
+            case INCAPABLE -> ts.foulsIncapable++;
+            case ILLEGAL_DEFENCE -> ts.foulsIllegalDefence++;
+            default -> ts.foulsContact++;
+        }
+        double ownBall = Math.hypot(last[0] - ball[0], last[1] - ball[1]);
+        double nearest = Double.POSITIVE_INFINITY, nearestBall = Double.NaN;
+        for (double[] o : lastTorso[side == Side.LEFT ? 1 : 0]) {
+            if (o == null) continue;
+            double d = Math.hypot(o[0] - last[0], o[1] - last[1]);
+            if (d < nearest) { nearest = d; nearestBall = Math.hypot(o[0] - ball[0], o[1] - ball[1]); }
+        }
+        foulEvents.add(new Foul(lastTime, side, u, last[0], last[1], kind, ownBall, nearest, nearestBall < ownBall));
+    }
+
+    private static boolean insideOwnArea(Side side, double[] p) {
+        double fromLine = side == Side.LEFT ? p[0] + FIELD_HALF_LENGTH : FIELD_HALF_LENGTH - p[0];
+        return fromLine <= PENALTY_LENGTH && Math.abs(p[1]) <= PENALTY_HALF_WIDTH;
+    }
+
+    private int fieldPlayersInOwnArea(Side side) {
+        int n = 0;
+        for (int u = 2; u <= players; u++) {
+            double[] p = lastTorso[side.ordinal()][u];
+            if (p != null && insideOwnArea(side, p)) n++;
+        }
+        return n;
     }
 
     /** The team of the torso nearest the ball, if one is within reach. */
@@ -286,11 +356,13 @@ public final class GameStats {
         return String.format(Locale.ROOT, "game-stats side=%s team=%s goals=%d shots_on_goal=%d kicks=%d kicks_over_8m=%d"
                         + " kicks_under_1_5m=%d possession=%.3f ball_own_third=%.3f ball_middle=%.3f ball_opponent_third=%.3f"
                         + " falls=%d lying_s=%.1f relocated=%d free_kicks=%d direct_free_kicks=%d kick_ins=%d corners=%d"
-                        + " goal_kicks=%d offsides=%d kick_offs=%d kick_off_fouls=%d play_on_s=%.1f",
+                        + " goal_kicks=%d offsides=%d kick_offs=%d kick_off_fouls=%d play_on_s=%.1f"
+                        + " fouls_contact=%d fouls_incapable=%d fouls_illegal_defence=%d",
                 side == Side.LEFT ? "left" : "right", t.name == null ? "?" : t.name, t.goals, t.shotsOnGoal, t.kicks,
                 t.kicksOver8m, t.kicksUnder1_5m, t.possessionS / p, t.ownThirdS / p, t.middleS / p, t.opponentThirdS / p,
                 t.falls, t.lyingS, t.relocated, t.setPiece("free_kick"), t.setPiece("direct_free_kick"), t.setPiece("kick_in"),
-                t.setPiece("corner"), t.setPiece("goal_kick"), t.setPiece("offside"), t.kickOffs, t.kickOffFouls, playOnS);
+                t.setPiece("corner"), t.setPiece("goal_kick"), t.setPiece("offside"), t.kickOffs, t.kickOffFouls, playOnS,
+                t.foulsContact, t.foulsIncapable, t.foulsIllegalDefence);
     }
 
     /** A ball heat map over the PlayOn time: the field in 1 m cells, darker where the ball spent longer. */
@@ -322,6 +394,13 @@ public final class GameStats {
         String shot = k == null ? "walked in" : String.format(Locale.ROOT, "shot t=%.2f from (%.2f,%.2f) %.2f m to the line, %s",
                 k.time(), k.x0(), k.y0(), FIELD_HALF_LENGTH - Math.abs(k.x0()), defence("at the shot", k.defence()));
         return String.format(Locale.ROOT, "goal t=%.2f %s: %s; %s", g.time(), side, shot, defence("at the goal", g.atGoal()));
+    }
+
+    /** One foul as a line. */
+    static String describe(Foul f) {
+        return String.format(Locale.ROOT, "foul t=%.2f %s %d %s at (%.2f,%.2f): ball %.2f m, nearest opponent %.2f m%s",
+                f.time(), f.side() == Side.LEFT ? "left" : "right", f.unum(), f.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '),
+                f.x(), f.y(), f.ballDistance(), f.nearestOpponent(), f.opponentNearerBall() ? " (nearer the ball)" : "");
     }
 
     private static String defence(String when, Defence d) {
@@ -368,11 +447,13 @@ public final class GameStats {
     }
 
     static final String USAGE = """
-            usage: scripts/phalanx stats game MONITOR_LOG [--svg OUT.svg] [--kicks] [--goals] [--players 11]
+            usage: scripts/phalanx stats game MONITOR_LOG [--svg OUT.svg] [--kicks] [--goals] [--fouls] [--players 11]
               MONITOR_LOG is a match's monitor.log.gz (scripts/phalanx match records one per match) or any
               monitor stream saved one message a line; prints one game-stats line per team;
               --kicks also lists every kick (time, team, from, to, length);
               --goals every goal: its shot (from where, how long, the defence when it left) or walked in;
+              --fouls every player the referee took off: who, what for (contact, incapable, illegal defence),
+              where, the ball and the nearest opponent;
               --track left:1 a robot's torso (x, y, lying or up) and the ball every --every S game seconds
               (default 1), between --from and --to (game time); repeat --track for more robots""";
 
@@ -401,14 +482,15 @@ public final class GameStats {
     public static void main(String[] argv) {
         Path log = null, svg = null;
         int players = 11;
-        boolean listKicks = false, listGoals = false;
+        boolean listKicks = false, listGoals = false, listFouls = false;
         java.util.List<Tracked> tracked = new java.util.ArrayList<>();
         double every = 1, from = 0, to = Double.POSITIVE_INFINITY;
         try {
-            for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of("--kicks", "--goals"))) {
+            for (String[] p : Flags.pairs(argv.length > 0 && !argv[0].startsWith("-") ? java.util.Arrays.copyOfRange(argv, 1, argv.length) : argv, USAGE, java.util.Set.of("--kicks", "--goals", "--fouls"))) {
                 switch (p[0]) {
                     case "--kicks" -> listKicks = true;
                     case "--goals" -> listGoals = true;
+                    case "--fouls" -> listFouls = true;
                     case "--svg" -> svg = Path.of(p[1]);
                     case "--players" -> players = (int) Flags.number(p[0], p[1], 1, 11, true);
                     case "--track" -> tracked.add(Tracked.parse(p[1]));
@@ -448,6 +530,7 @@ public final class GameStats {
                 }
             }
             if (listGoals) for (Goal goal : g.goals()) System.out.println(describe(goal));
+            if (listFouls) for (Foul f : g.fouls()) System.out.println(describe(f));
             if (g.unreadable() > 0) System.err.println("game-stats: " + g.unreadable() + " of " + g.messages() + " lines were not monitor messages and were skipped");
             if (svg != null) {
                 Files.writeString(svg, g.svg());

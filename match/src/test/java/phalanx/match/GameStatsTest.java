@@ -177,4 +177,58 @@ class GameStatsTest {
     void theCommandRefusesAMissingLog() {
         assertThrows(java.nio.file.NoSuchFileException.class, () -> GameStats.read(Path.of("/nonexistent/monitor.log.gz"), 11));
     }
+
+    /** A scene of robots given as {side (0 left, 1 right), unum, x, y, z, lying (1/0)} each, and the ball. */
+    private static String robots(double t, int mode, double bx, double by, double[]... robots) {
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "(%s(time %.2f)(half 1)(score_left 0)(score_right 0)(play_mode %d))(RSG 0 1)("
+                + "(nd TRF (SLT 1 0 0 0 0 1 0 0 0 0 1 0 %.3f %.3f 0.042 1)(nd StaticMesh (load models/soccerball.obj)))", MODES, t, mode, bx, by));
+        for (double[] r : robots) {
+            String torso = r[5] > 0 ? "1 0 0 0 0 0 1 0 0 -1 0 0" : "1 0 0 0 0 1 0 0 0 0 1 0";
+            b.append(String.format(Locale.ROOT, "(nd TRF (SLT %s %.3f %.3f %.3f 1)(nd TRF (nd StaticMesh (load models/naobody.obj) (resetMaterials %s matNum%d))))",
+                    torso, r[2], r[3], r[4], r[0] == 0 ? "matLeft" : "matRight", (int) r[1]));
+        }
+        return b.append(")").toString();
+    }
+
+    @Test
+    void aPlayerHeldUpByTheRefereeIsAFoulOfTheKindThePictureBeforeShows() {
+        GameStats g = new GameStats(11);
+        double t = 0;
+        // left 2 walks into right 5, who stands 0.3 m nearer the ball at (4, 0)
+        for (int i = 0; i < 10; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 4, 0, new double[] {0, 2, 3.0, 0, 0.38, 0},
+                new double[] {1, 5, 3.3, 0, 0.38, 0}, new double[] {0, 7, -6, 5, 0.38, 1}));
+        // the referee holds left 2 up for 0.5 s (z 1.0 and more) and left 7, lying since, too
+        for (int i = 0; i < 13; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 4, 0, new double[] {0, 2, 3.0, 0, 1.0 + 0.02 * i, 0},
+                new double[] {1, 5, 3.3, 0, 0.38, 0}, new double[] {0, 7, -6, 5, 1.0 + 0.02 * i, 1}));
+        // ... then puts them beside the field
+        for (int i = 0; i < 5; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 4, 0, new double[] {0, 2, -3, -10.5, 0.4, 0},
+                new double[] {1, 5, 3.3, 0, 0.38, 0}, new double[] {0, 7, -0.6, -10.5, 0.4, 0}));
+        GameStats.TeamStats us = g.team(Side.LEFT);
+        assertEquals(1, us.foulsContact, g.line(Side.LEFT));
+        assertEquals(1, us.foulsIncapable, g.line(Side.LEFT));
+        assertEquals(0, us.foulsIllegalDefence + g.team(Side.RIGHT).foulsContact + g.team(Side.RIGHT).foulsIncapable);
+        assertEquals(2, us.relocated, "each was moved off once");
+        assertEquals(0, us.falls, "held and put down is no fall");
+        GameStats.Foul charge = g.fouls().stream().filter(f -> f.unum() == 2).findFirst().orElseThrow();
+        assertEquals(GameStats.Foul.Kind.CONTACT, charge.kind());
+        assertEquals(1.0, charge.ballDistance(), 1e-9);
+        assertEquals(0.3, charge.nearestOpponent(), 1e-9);
+        assertTrue(charge.opponentNearerBall());
+        assertEquals("foul t=0.36 left 2 contact at (3.00,0.00): ball 1.00 m, nearest opponent 0.30 m (nearer the ball)",
+                GameStats.describe(charge));
+        assertTrue(g.line(Side.LEFT).endsWith(" fouls_contact=1 fouls_incapable=1 fouls_illegal_defence=0"), g.line(Side.LEFT));
+    }
+
+    @Test
+    void aFourthFieldPlayerInsideHisOwnAreaHeldUpIsIllegalDefence() {
+        GameStats g = new GameStats(11);
+        double t = 0;
+        double[][] inside = new double[4][];
+        for (int u = 2; u <= 5; u++) inside[u - 2] = new double[] {0, u, -14.0, -1.5 + u * 0.5, 0.38, 0};
+        for (int i = 0; i < 5; i++, t += 0.04) g.accept(robots(t, PLAY_ON, -13, 0, inside));
+        inside[3] = new double[] {0, 5, -14.0, 1.0, 1.0, 0};
+        g.accept(robots(t, PLAY_ON, -13, 0, inside));
+        assertEquals(1, g.team(Side.LEFT).foulsIllegalDefence, g.line(Side.LEFT));
+        assertEquals(0, g.team(Side.LEFT).foulsContact);
+    }
 }
