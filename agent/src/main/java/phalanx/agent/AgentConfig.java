@@ -16,9 +16,10 @@ import phalanx.model.robot.NaoModel;
  * @param fallback   the field player's own choice while the coordinator is quiet
  * @param approach   On Ball's way to the ball (ours)
  * @param kickOff    our kick-off: a tap and a partner (ours)
+ * @param charging   walking slowly into opponents, so the referee does not call us for charging (the server's rule)
  */
 public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obstacles obstacles,
-                          Keeper keeper, Fallback fallback, Approach approach, KickOff kickOff) {
+                          Keeper keeper, Fallback fallback, Approach approach, KickOff kickOff, Charging charging) {
 
     /**
      * @param panAmplitudeDeg  Pan Head / Scan yaw swing each side (ours: ±90° with the 120° field of
@@ -282,30 +283,52 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         public static final KickOff DEFAULT = OFF;
     }
 
+    /**
+     * The referee's charging foul (SoccerRuleAspect::AnalyseChargingFouls, naosoccersim.rb; docs/protocol.md "Charging
+     * and crowding"): a robot that walks into an opponent at ChargingMinSpeed 0.4 m/s or more is taken off unless, within
+     * ChargingMaxBallRulesDist 1 m of the ball, it heads for the ball and is the nearer of the two to it, or it touched
+     * the ball within the last second. Not in the thesis (its server had no such rule); the numbers are ours.
+     *
+     * @param enabled        slow down at all
+     * @param range          an opponent's torso within this of ours ... (the walk needs ~0.4 m to slow from full speed)
+     * @param aheadDeg       ... and within this of the way we walk, is one we could run into
+     * @param speedShare     walk at most this share of the walk's limits near him (0.4 × 0.88 m/s: under 0.4 m/s)
+     * @param ballRulesDistance within this of the ball (either of us) the server asks who heads for it and is nearer ...
+     * @param nearerMargin   ... so we keep our speed when heading for it and nearer than he is by this
+     * @param onBallWithin   the ball this close: we are on it (dribbling touches it all the time: immune), keep going
+     */
+    public record Charging(boolean enabled, double range, double aheadDeg, double speedShare, double ballRulesDistance,
+                           double nearerMargin, double onBallWithin) {
+        public static final Charging DEFAULT = new Charging(true, 1.0, 60, 0.4, 1.0, 0.1, 0.3);
+        public static final Charging OFF = new Charging(false, 1.0, 60, 0.4, 1.0, 0.1, 0.3);
+    }
+
     public static final AgentConfig DEFAULT = new AgentConfig(Head.DEFAULT, Beliefs.DEFAULT, Walk.DEFAULT,
-            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT);
+            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT, Charging.DEFAULT);
 
     public AgentConfig {
         if (head == null || beliefs == null || walk == null || kick == null || obstacles == null
-                || keeper == null || fallback == null || approach == null || kickOff == null) {
+                || keeper == null || fallback == null || approach == null || kickOff == null || charging == null) {
             throw new IllegalArgumentException("every part of the agent config is required");
         }
     }
 
-    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach, kickOff); }
+    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach, kickOff, charging); }
 
-    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach, kickOff); }
+    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach, kickOff, charging); }
 
-    public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a, kickOff); }
+    public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a, kickOff, charging); }
 
-    public AgentConfig withFallback(Fallback f) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, f, approach, kickOff); }
+    public AgentConfig withFallback(Fallback f) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, f, approach, kickOff, charging); }
 
-    public AgentConfig withKickOff(KickOff k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, k); }
+    public AgentConfig withCharging(Charging c) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, kickOff, c); }
+
+    public AgentConfig withKickOff(KickOff k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, k, charging); }
 
     /** The defaults with the leg geometry of this robot type (the camera height for Track Object) and its kicks. */
     public static AgentConfig forRobotType(int type) {
         Head h = new Head(Head.DEFAULT.panAmplitudeDeg(), Head.DEFAULT.panPeriodSeconds(), Head.DEFAULT.scanPitchDownDeg(),
                 NaoModel.ofType(type), Head.DEFAULT.leadSeconds());
-        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT);
+        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT, Charging.DEFAULT);
     }
 }

@@ -60,15 +60,8 @@ public final class AvoidObstacles {
         for (int i = 0; i < players.size(); i++) {   // indexed: no iterator every cycle
             PlayerBelief p = players.get(i);
             if (p == null || !(now - p.time() <= config.beliefs().playerMemorySeconds())) continue;
-            // A remembered player's relative vector goes stale as we walk; its own-frame position does not.
-            Vector2 rel;
-            if (self != null && p.global() != null) {
-                if (surelyOutOfRange(self, p.global().x(), p.global().y())) continue;
-                rel = self.toRelative(p.global());
-            } else {
-                rel = p.relative();
-            }
-            add(out, rel);
+            if (self != null && p.global() != null && surelyOutOfRange(self, p.global().x(), p.global().y())) continue;
+            add(out, Facts.relative(p, self));
         }
     }
 

@@ -76,6 +76,14 @@ public final class Facts {
         return false;
     }
 
+    /**
+     * A player's position relative to the body now: from his own-frame position and our pose when both are known (a
+     * remembered player's relative vector goes stale as we walk; his own-frame position does not), else as last seen.
+     */
+    public static Vector2 relative(PlayerBelief p, Pose2 self) {
+        return self != null && p.global() != null ? self.toRelative(p.global()) : p.relative();
+    }
+
     /** The fall state, STANDING when unknown. */
     public static FallState fall(Situation s) {
         WorldBelief b = s.belief();

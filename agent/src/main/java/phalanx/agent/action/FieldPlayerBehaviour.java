@@ -41,6 +41,7 @@ public final class FieldPlayerBehaviour {
     private final AgentConfig config;
     private final StandUp standUp;
     private final KickOffPlay kickOff;
+    private final ChargingGuard guard;
     private phalanx.comm.team.Action order;
     private ActionId runningId;
     private boolean runningOwn;
@@ -57,6 +58,7 @@ public final class FieldPlayerBehaviour {
         this.config = config;
         this.standUp = new StandUp(config);
         this.kickOff = new KickOffPlay(config, unum);
+        this.guard = new ChargingGuard(config);
     }
 
     /** The coordinator's last order to this player (null: none). */
@@ -87,7 +89,7 @@ public final class FieldPlayerBehaviour {
             running = ownChoice(s, home);
             runningOwn = true;
         }
-        Decision d = running.decide(s);
+        Decision d = guard.apply(s, running.decide(s));
         logPhase(s);
         return d;
     }
