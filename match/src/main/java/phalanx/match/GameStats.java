@@ -62,8 +62,12 @@ public final class GameStats {
     public static final class TeamStats {
         public String name;
         public int goals, kicks, kicksOver8m, kicksUnder1_5m, shotsOnGoal, falls, relocated;
-        /** Fouls the referee took a player off for, by what the picture before showed (see {@link Foul.Kind}). */
-        public int foulsContact, foulsIncapable, foulsIllegalDefence;
+        /** Fouls the referee took a player off for, by kind (see {@link Foul}). */
+        public final Map<Foul.Kind, Integer> fouls = new EnumMap<>(Foul.Kind.class);
+        /** The server's self-collision records (a robot's own limbs touching: its joints freeze, it is not moved). */
+        public int selfCollisions;
+
+        public int fouls(Foul.Kind k) { return fouls.getOrDefault(k, 0); }
         /** This team's kick-offs, and those of them the other side got a free kick from (docs/protocol.md, "Set pieces"). */
         public int kickOffs, kickOffFouls;
         public double possessionS, ownThirdS, middleS, opponentThirdS, lyingS;
@@ -112,15 +116,28 @@ public final class GameStats {
 
     /**
      * A player the referee held up for a foul: when, who, where he stood the picture before, the ball's distance, and the
-     * nearest opponent (distance, and whether that one was nearer the ball). The kind is read off that picture, as the
-     * server's own record of the foul does not reach the monitor: lying = incapable (on the ground 15 s or not standing
-     * 30 s), else one of more than three of his team's field players in his own penalty area = illegal defence, else
-     * contact (charging, or the third robot in a touch group).
+     * nearest opponent (distance, and whether that one was nearer the ball). The kind is the server's when its monitor
+     * stream names the foul (SoccerRuleItem's {@code (foul index type team unum)}, sent by the SimSpark-SPL snapshot);
+     * else it is read off the picture before: lying = incapable (on the ground 15 s or not standing 30 s), one of more
+     * than three of his team's field players in his own penalty area = illegal defence, else contact.
      */
     public record Foul(double time, Side side, int unum, double x, double y, Kind kind, double ballDistance,
                        double nearestOpponent, boolean opponentNearerBall) {
-        public enum Kind { CONTACT, INCAPABLE, ILLEGAL_DEFENCE }
+        /** SoccerRuleAspect::EFoulType in its order (the monitor's number), then CONTACT for a foul the server did not name. */
+        public enum Kind {
+            CROWDING, TOUCHING, ILLEGAL_DEFENCE, ILLEGAL_ATTACK, INCAPABLE, KICK_OFF, CHARGING, SELF_COLLISION, CONTACT;
+
+            static Kind ofServer(int type) { return type >= 0 && type < CONTACT.ordinal() ? values()[type] : null; }
+
+            String key() { return name().toLowerCase(Locale.ROOT); }
+        }
     }
+
+    /** The kind and game time of each player's last foul as the server named it, side then unum; null: none. */
+    private final Foul.Kind[][] namedKind = new Foul.Kind[2][12];
+    private final double[][] namedAt = new double[2][12];
+    /** A foul the server named this long before the player was held up is the one he is held for. */
+    static final double NAMED_WITHIN_S = 1.0;
 
     private final java.util.List<Foul> foulEvents = new java.util.ArrayList<>();
     private final double[][] lastZ = new double[2][12];
@@ -162,6 +179,7 @@ public final class GameStats {
         if (state.teamRight() != null) teams.get(Side.RIGHT).name = state.teamRight();
         PlayMode mode = state.playMode();
         double t = state.time();
+        namedFouls(message, t);
         if (mode != lastMode) modeChanged(mode, t);
         scored(Side.LEFT, state.scoreLeft(), t);
         scored(Side.RIGHT, state.scoreRight(), t);
@@ -241,7 +259,7 @@ public final class GameStats {
                 if (p == null) { lastTorso[side.ordinal()][u] = null; continue; }
                 boolean lying = p.upZ() < LYING_UP_Z;
                 boolean held = p.z() >= HELD_Z;
-                if (last != null && held && lastZ[side.ordinal()][u] < HELD_Z && !beamsAllowed) foul(side, u, last, ball);
+                if (last != null && held && lastZ[side.ordinal()][u] < HELD_Z && !beamsAllowed) foul(side, u, last, ball, state.time());
                 lastZ[side.ordinal()][u] = p.z();
                 if (held) continue;                       // in the air: neither a fall nor a torso near the ball
                 if (last != null) {
@@ -279,18 +297,37 @@ public final class GameStats {
         lastBallSpeed = speed > TELEPORT_SPEED ? 0 : speed;
     }
 
-    /** A foul of player {@code u}, classified by where and how he was in the picture before ({@code last}). */
-    private void foul(Side side, int u, double[] last, double[] ball) {
+    /** Reads the server's {@code (foul index type team unum)} records of this message (team 1 left, 2 right). */
+    private void namedFouls(String message, double t) {
+        for (int at = message.indexOf("(foul "); at >= 0; at = message.indexOf("(foul ", at + 6)) {
+            int end = message.indexOf(')', at);
+            if (end < 0) return;
+            String[] f = message.substring(at + 6, end).trim().split("\\s+");
+            if (f.length != 4) continue;
+            try {
+                Foul.Kind kind = Foul.Kind.ofServer(Integer.parseInt(f[1]));
+                int team = Integer.parseInt(f[2]), unum = Integer.parseInt(f[3]);
+                if (kind == null || team < 1 || team > 2 || unum < 1 || unum > 11) continue;
+                Side side = team == 1 ? Side.LEFT : Side.RIGHT;
+                if (kind == Foul.Kind.SELF_COLLISION) teams.get(side).selfCollisions++;
+                namedKind[side.ordinal()][unum] = kind;
+                namedAt[side.ordinal()][unum] = t;
+            } catch (NumberFormatException e) {
+                // not a foul record of this format: leave it
+            }
+        }
+    }
+
+    /** A foul of player {@code u}, held up now; {@code last} is where and how he was in the picture before. */
+    private void foul(Side side, int u, double[] last, double[] ball, double now) {
         TeamStats ts = teams.get(side);
+        Foul.Kind named = namedKind[side.ordinal()][u];
         Foul.Kind kind;
-        if (last[2] < LYING_UP_Z) kind = Foul.Kind.INCAPABLE;
+        if (named != null && named != Foul.Kind.SELF_COLLISION && now - namedAt[side.ordinal()][u] <= NAMED_WITHIN_S) kind = named;
+        else if (last[2] < LYING_UP_Z) kind = Foul.Kind.INCAPABLE;
         else if (u != 1 && insideOwnArea(side, last) && fieldPlayersInOwnArea(side) > MAX_IN_OWN_AREA) kind = Foul.Kind.ILLEGAL_DEFENCE;
         else kind = Foul.Kind.CONTACT;
-        switch (kind) {
-            case INCAPABLE -> ts.foulsIncapable++;
-            case ILLEGAL_DEFENCE -> ts.foulsIllegalDefence++;
-            default -> ts.foulsContact++;
-        }
+        ts.fouls.merge(kind, 1, Integer::sum);
         double ownBall = Math.hypot(last[0] - ball[0], last[1] - ball[1]);
         double nearest = Double.POSITIVE_INFINITY, nearestBall = Double.NaN;
         for (double[] o : lastTorso[side == Side.LEFT ? 1 : 0]) {
@@ -357,12 +394,15 @@ public final class GameStats {
                         + " kicks_under_1_5m=%d possession=%.3f ball_own_third=%.3f ball_middle=%.3f ball_opponent_third=%.3f"
                         + " falls=%d lying_s=%.1f relocated=%d free_kicks=%d direct_free_kicks=%d kick_ins=%d corners=%d"
                         + " goal_kicks=%d offsides=%d kick_offs=%d kick_off_fouls=%d play_on_s=%.1f"
-                        + " fouls_contact=%d fouls_incapable=%d fouls_illegal_defence=%d",
+                        + " fouls_charging=%d fouls_touching=%d fouls_contact=%d fouls_incapable=%d fouls_illegal_defence=%d"
+                        + " fouls_other=%d self_collisions=%d",
                 side == Side.LEFT ? "left" : "right", t.name == null ? "?" : t.name, t.goals, t.shotsOnGoal, t.kicks,
                 t.kicksOver8m, t.kicksUnder1_5m, t.possessionS / p, t.ownThirdS / p, t.middleS / p, t.opponentThirdS / p,
                 t.falls, t.lyingS, t.relocated, t.setPiece("free_kick"), t.setPiece("direct_free_kick"), t.setPiece("kick_in"),
                 t.setPiece("corner"), t.setPiece("goal_kick"), t.setPiece("offside"), t.kickOffs, t.kickOffFouls, playOnS,
-                t.foulsContact, t.foulsIncapable, t.foulsIllegalDefence);
+                t.fouls(Foul.Kind.CHARGING), t.fouls(Foul.Kind.TOUCHING), t.fouls(Foul.Kind.CONTACT), t.fouls(Foul.Kind.INCAPABLE),
+                t.fouls(Foul.Kind.ILLEGAL_DEFENCE), t.fouls(Foul.Kind.CROWDING) + t.fouls(Foul.Kind.ILLEGAL_ATTACK) + t.fouls(Foul.Kind.KICK_OFF),
+                t.selfCollisions);
     }
 
     /** A ball heat map over the PlayOn time: the field in 1 m cells, darker where the ball spent longer. */
@@ -399,7 +439,7 @@ public final class GameStats {
     /** One foul as a line. */
     static String describe(Foul f) {
         return String.format(Locale.ROOT, "foul t=%.2f %s %d %s at (%.2f,%.2f): ball %.2f m, nearest opponent %.2f m%s",
-                f.time(), f.side() == Side.LEFT ? "left" : "right", f.unum(), f.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '),
+                f.time(), f.side() == Side.LEFT ? "left" : "right", f.unum(), f.kind().key().replace('_', ' '),
                 f.x(), f.y(), f.ballDistance(), f.nearestOpponent(), f.opponentNearerBall() ? " (nearer the ball)" : "");
     }
 
@@ -452,8 +492,8 @@ public final class GameStats {
               monitor stream saved one message a line; prints one game-stats line per team;
               --kicks also lists every kick (time, team, from, to, length);
               --goals every goal: its shot (from where, how long, the defence when it left) or walked in;
-              --fouls every player the referee took off: who, what for (contact, incapable, illegal defence),
-              where, the ball and the nearest opponent;
+              --fouls every player the referee took off: who, what for (the server's word when its monitor
+              stream names fouls, else contact, incapable or illegal defence), where, the ball and the nearest opponent;
               --track left:1 a robot's torso (x, y, lying or up) and the ball every --every S game seconds
               (default 1), between --from and --to (game time); repeat --track for more robots""";
 

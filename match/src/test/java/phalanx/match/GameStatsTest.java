@@ -204,9 +204,10 @@ class GameStatsTest {
         for (int i = 0; i < 5; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 4, 0, new double[] {0, 2, -3, -10.5, 0.4, 0},
                 new double[] {1, 5, 3.3, 0, 0.38, 0}, new double[] {0, 7, -0.6, -10.5, 0.4, 0}));
         GameStats.TeamStats us = g.team(Side.LEFT);
-        assertEquals(1, us.foulsContact, g.line(Side.LEFT));
-        assertEquals(1, us.foulsIncapable, g.line(Side.LEFT));
-        assertEquals(0, us.foulsIllegalDefence + g.team(Side.RIGHT).foulsContact + g.team(Side.RIGHT).foulsIncapable);
+        assertEquals(1, us.fouls(GameStats.Foul.Kind.CONTACT), g.line(Side.LEFT));
+        assertEquals(1, us.fouls(GameStats.Foul.Kind.INCAPABLE), g.line(Side.LEFT));
+        assertEquals(2, us.fouls.values().stream().mapToInt(Integer::intValue).sum());
+        assertTrue(g.team(Side.RIGHT).fouls.isEmpty());
         assertEquals(2, us.relocated, "each was moved off once");
         assertEquals(0, us.falls, "held and put down is no fall");
         GameStats.Foul charge = g.fouls().stream().filter(f -> f.unum() == 2).findFirst().orElseThrow();
@@ -216,7 +217,8 @@ class GameStatsTest {
         assertTrue(charge.opponentNearerBall());
         assertEquals("foul t=0.36 left 2 contact at (3.00,0.00): ball 1.00 m, nearest opponent 0.30 m (nearer the ball)",
                 GameStats.describe(charge));
-        assertTrue(g.line(Side.LEFT).endsWith(" fouls_contact=1 fouls_incapable=1 fouls_illegal_defence=0"), g.line(Side.LEFT));
+        assertTrue(g.line(Side.LEFT).endsWith(" fouls_charging=0 fouls_touching=0 fouls_contact=1 fouls_incapable=1"
+                + " fouls_illegal_defence=0 fouls_other=0 self_collisions=0"), g.line(Side.LEFT));
     }
 
     @Test
@@ -228,7 +230,27 @@ class GameStatsTest {
         for (int i = 0; i < 5; i++, t += 0.04) g.accept(robots(t, PLAY_ON, -13, 0, inside));
         inside[3] = new double[] {0, 5, -14.0, 1.0, 1.0, 0};
         g.accept(robots(t, PLAY_ON, -13, 0, inside));
-        assertEquals(1, g.team(Side.LEFT).foulsIllegalDefence, g.line(Side.LEFT));
-        assertEquals(0, g.team(Side.LEFT).foulsContact);
+        assertEquals(1, g.team(Side.LEFT).fouls(GameStats.Foul.Kind.ILLEGAL_DEFENCE), g.line(Side.LEFT));
+        assertEquals(0, g.team(Side.LEFT).fouls(GameStats.Foul.Kind.CONTACT));
+    }
+
+    @Test
+    void theServersNameForAFoulWinsAndSelfCollisionsAreCountedWithoutAMove() {
+        GameStats g = new GameStats(11);
+        double t = 0;
+        double[] me = {0, 2, 3.0, 0, 0.38, 0}, him = {1, 5, 3.3, 0, 0.38, 0};
+        for (int i = 0; i < 5; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 4, 0, me, him));
+        // SoccerRuleItem: (foul index type team unum); 7 = FT_SelfCollision of right 5 (not moved), 6 = FT_Charging of left 2
+        g.accept(robots(t, PLAY_ON, 4, 0, me, him).replace("(play_mode 3)", "(play_mode 3)(foul 1 7 2 5)")); t += 0.04;
+        g.accept(robots(t, PLAY_ON, 4, 0, me, him).replace("(play_mode 3)", "(play_mode 3)(foul 2 6 1 2)(foul 3 6 1 2)")); t += 0.04;
+        g.accept(robots(t, PLAY_ON, 4, 0, new double[] {0, 2, 3.0, 0, 1.01, 0}, him).replace("(play_mode 3)", "(play_mode 3)(foul 4 6 1 2)"));
+        t += 0.04;
+        g.accept(robots(t, PLAY_ON, 4, 0, new double[] {0, 2, 3.0, 0, 1.02, 0}, him).replace("(play_mode 3)", "(play_mode 3)(foul x y)"));
+        assertEquals(1, g.team(Side.LEFT).fouls(GameStats.Foul.Kind.CHARGING), g.line(Side.LEFT));
+        assertEquals(0, g.team(Side.LEFT).fouls(GameStats.Foul.Kind.CONTACT));
+        assertEquals(1, g.team(Side.RIGHT).selfCollisions, g.line(Side.RIGHT));
+        assertTrue(g.team(Side.RIGHT).fouls.isEmpty(), "a self collision moves no one");
+        assertEquals(0, g.unreadable(), "a foul record of another format is left alone");
+        assertTrue(GameStats.describe(g.fouls().get(0)).contains(" left 2 charging at (3.00,0.00)"), GameStats.describe(g.fouls().get(0)));
     }
 }
