@@ -22,7 +22,8 @@ class ApproachBallTest {
         assertEquals(0, t.thetaDeg(), 1e-9);
         Move.Omni m = (Move.Omni) a.decide(s).move();
         assertEquals(1.0, m.forward(), 1e-3);
-        assertEquals(0, m.left(), 0.02);
+        // the walk goes where the spot is: shares times the walk's limits (0.88 forward, 0.1 sideways) point at it
+        assertEquals(0.055 / 4.78, m.left() * 0.1 / (m.forward() * 0.88), 1e-6);
         assertFalse(a.done(s));
     }
 
@@ -50,7 +51,15 @@ class ApproachBallTest {
     void facingAwayFromAFarSpotItTurnsBeforeItWalks() {
         Move.Omni m = (Move.Omni) a.decide(World.at(-5, 0, 180).ballAt(0, 0).situation()).move();
         assertEquals(1.0, Math.abs(m.turn()), 1e-9);
-        assertTrue(Math.hypot(m.forward(), m.left()) <= 0.2 + 1e-9, m.toString());
+        assertTrue(Math.max(Math.abs(m.forward()), Math.abs(m.left())) <= 0.2 + 1e-9, m.toString());
+    }
+
+    @Test
+    void nearTheSpotASidewaysErrorIsWalkedAtTheSidewaysLimit() {
+        // 6 cm right of the spot, facing the goal: all sideways, at the full share the distance allows
+        Move.Omni m = (Move.Omni) a.decide(World.at(-0.22, 0.115, 0).ballAt(0, 0).situation()).move();
+        assertEquals(0, m.forward(), 1e-9);
+        assertEquals(-C.approach().minShare(), m.left(), 1e-9, "0.06 m within slowWithin: the minimum share, to the right");
     }
 
     @Test
