@@ -29,7 +29,7 @@ public record PlayerConfig(FieldSpec field, NaoModel body, LocalizationConfig lo
     public static PlayerConfig of(PlayerOptions o) {
         AgentConfig agent = AgentConfig.forRobotType(o.robotType());
         return new PlayerConfig(FieldSpec.forPlayers(o.players()), NaoModel.ofType(o.robotType()),
-                LocalizationConfig.DEFAULT, MotionConfig.DEFAULT, WalkConfig.forType(o.robotType()),
+                LocalizationConfig.DEFAULT, MotionConfig.DEFAULT.withStand(o.standBeforeMillis() / 1000.0, o.standAfterMillis() / 1000.0), WalkConfig.forType(o.robotType()),
                 ChannelConfig.DEFAULT.withPlayers(o.players()), CoordinationConfig.THESIS,
                 agent.withKick(agent.kick().withDribbleWithin(o.dribbleWithin()))
                         .withApproach(o.thesisApproach() ? AgentConfig.Approach.THESIS : agent.approach())

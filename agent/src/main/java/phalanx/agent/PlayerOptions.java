@@ -1,12 +1,14 @@
 package phalanx.agent;
 
+import phalanx.motion.MotionConfig;
+
 import java.nio.file.Path;
 import java.nio.file.Paths;
 
 /** The player's command line (issue 8). {@link #parse} names the flag at fault. */
 public record PlayerOptions(String host, int port, String team, int unum, int players, int robotType,
                             Path logDir, long connectTimeoutMillis, Path motions, String roboviz, boolean still,
-                            int dribbleWithin, boolean mj, boolean thesisApproach, boolean kickOffKick) {
+                            int dribbleWithin, boolean mj, boolean thesisApproach, boolean kickOffKick, int standBeforeMillis, int standAfterMillis) {
 
     public static final String USAGE = """
             usage: phalanx-player [--host H] [--port P] [--team NAME] [--unum N] [--players 9|11] [--type T] [--log-dir DIR]
@@ -29,11 +31,16 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                              AgentConfig.Approach) or thesis (4.6.2: Walk To Ball, then the align orbit)
               --kick-off K   kick (default: On Ball as in any mode; on an empty field the taker's second touch
                              is a foul) or tap (player 10 taps the ball and player 9 plays it; AgentConfig.KickOff.TAP)
+              --stand-before MS  before a kick, once the walk has stopped, stand MS milliseconds (0-2000;
+                             default MotionConfig.standBeforeSeconds)
+              --stand-after MS   after a kick, get-up or dive, stand MS milliseconds in the walk's crouch before
+                             stepping (0-2000; default MotionConfig.standAfterSeconds)
               --server S     simspark (default: rcssserver3d, a Nao) or mj (rcssservermj, a Booster T1; 7 players,
                              --unum 1-7; docs/rcssservermj.md)""";
 
     public static PlayerOptions defaults() {
-        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false, 8, false, false, false);
+        return new PlayerOptions("127.0.0.1", 3100, "Phalanx", 0, 11, 0, null, 30_000, Paths.get("motions"), null, false, 8, false, false, false,
+                millis(MotionConfig.DEFAULT.standBeforeSeconds()), millis(MotionConfig.DEFAULT.standAfterSeconds()));
     }
 
     /** Parses flags; throws IllegalArgumentException whose message names the bad flag and value. */
@@ -48,6 +55,7 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
         boolean still = false;
         int dribbleWithin = o.dribbleWithin;
         boolean mj = false, thesisApproach = false, kickOffKick = true;
+        int standBeforeMillis = o.standBeforeMillis, standAfterMillis = o.standAfterMillis;
         for (int i = 0; i < args.length; i++) {
             String flag = args[i];
             if (flag.equals("-h") || flag.equals("--help")) throw new IllegalArgumentException("help");
@@ -81,6 +89,8 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                     if (!v.equals("tap") && !v.equals("kick")) throw new IllegalArgumentException("--kick-off must be tap or kick, got '" + v + "'");
                     kickOffKick = v.equals("kick");
                 }
+                case "--stand-before" -> standBeforeMillis = intIn(flag, v, 0, 2000);
+                case "--stand-after" -> standAfterMillis = intIn(flag, v, 0, 2000);
                 case "--server" -> {
                     if (!v.equals("simspark") && !v.equals("mj")) throw new IllegalArgumentException("--server must be simspark or mj, got '" + v + "'");
                     mj = v.equals("mj");
@@ -89,8 +99,10 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
             }
         }
         if (unum > players) throw new IllegalArgumentException("--unum " + unum + " is more than --players " + players);
-        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz, still, dribbleWithin, mj, thesisApproach, kickOffKick);
+        return new PlayerOptions(host, port, team, unum, players, type, logDir, connectMillis, motions, roboviz, still, dribbleWithin, mj, thesisApproach, kickOffKick, standBeforeMillis, standAfterMillis);
     }
+
+    private static int millis(double seconds) { return (int) Math.round(seconds * 1000); }
 
     private static int intIn(String flag, String v, int min, int max) {
         int n;

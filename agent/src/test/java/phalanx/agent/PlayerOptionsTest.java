@@ -28,6 +28,9 @@ class PlayerOptionsTest {
         assertFalse(PlayerConfig.of(PlayerOptions.parse("--approach", "thesis")).agent().approach().enabled(), "4.6.2's Walk To Ball");
         assertFalse(PlayerConfig.of(d).agent().kickOff().enabled(), "the kick-off kick by default (docs/matches.md, sessions 12-13)");
         assertTrue(PlayerConfig.of(PlayerOptions.parse("--kick-off", "tap")).agent().kickOff().enabled(), "the tap");
+        assertEquals(0.4, PlayerConfig.of(PlayerOptions.parse("--stand-after", "400")).motion().standAfterSeconds(), 1e-12);
+        assertEquals(20, PlayerConfig.of(PlayerOptions.parse("--stand-after", "400")).motion().standAfterCycles());
+        assertEquals(15, PlayerConfig.of(PlayerOptions.parse("--stand-before", "300")).motion().standBeforeCycles());
     }
 
     @Test
@@ -42,6 +45,8 @@ class PlayerOptionsTest {
         assertBad("--server must be simspark or mj, got 'mujoco'", "--server", "mujoco");
         assertBad("--approach must be omni or thesis, got 'fast'", "--approach", "fast");
         assertBad("--kick-off must be tap or kick, got 'shoot'", "--kick-off", "shoot");
+        assertBad("--stand-after must be 0-2000, got 2500", "--stand-after", "2500");
+        assertBad("--stand-before needs a whole number, got '0.5'", "--stand-before", "0.5");
         assertBad("unknown flag --speed", "--speed", "3");
         assertBad("--host needs a value", "--host");
         assertBad("unexpected argument 'foo'", "foo");

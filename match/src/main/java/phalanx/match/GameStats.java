@@ -458,7 +458,7 @@ public final class GameStats {
     public double[] torso(Side side, int unum) {
         if (unum < 1 || unum > players || !scene.hasScene()) return null;
         MonitorScene.Pose p = scene.torso(unum, side == Side.LEFT ? "Left" : "Right");
-        return p == null ? null : new double[] {p.x(), p.y(), p.upZ()};
+        return p == null ? null : new double[] {p.x(), p.y(), p.upZ(), p.forwardZ(), p.r()[6]};
     }
 
     /** The ball in the scene as it stands now, {x, y, z}, or null before the first scene. */
@@ -494,7 +494,7 @@ public final class GameStats {
               --goals every goal: its shot (from where, how long, the defence when it left) or walked in;
               --fouls every player the referee took off: who, what for (the server's word when its monitor
               stream names fouls, else contact, incapable or illegal defence), where, the ball and the nearest opponent;
-              --track left:1 a robot's torso (x, y, lying or up) and the ball every --every S game seconds
+              --track left:1 a robot's torso (x, y, lying or up, its tilt forward and to the right) and the ball every --every S game seconds
               (default 1), between --from and --to (game time); repeat --track for more robots""";
 
     /** A robot named on the command line, {@code left:1}. */
@@ -513,7 +513,9 @@ public final class GameStats {
         String line(double t, GameStats g) {
             double[] p = g.torso(side, unum), b = g.ball();
             String who = (side == Side.LEFT ? "left " : "right ") + unum;
-            String robot = p == null ? "not on the field" : String.format(Locale.ROOT, "(%.2f,%.2f) %s", p[0], p[1], p[2] < LYING_UP_Z ? "lying" : "up");
+            // tilt: how far the torso's forward (right) axis points below the horizon, degrees
+            String robot = p == null ? "not on the field" : String.format(Locale.ROOT, "(%.2f,%.2f) %s tilt %+d fwd %+d right",
+                    p[0], p[1], p[2] < LYING_UP_Z ? "lying" : "up", Math.round(-Math.toDegrees(Math.asin(p[3]))), Math.round(-Math.toDegrees(Math.asin(p[4]))));
             String ball = b == null ? "" : String.format(Locale.ROOT, " ball (%.2f,%.2f)", b[0], b[1]);
             return String.format(Locale.ROOT, "track t=%.2f %s %s%s", t, who, robot, ball);
         }

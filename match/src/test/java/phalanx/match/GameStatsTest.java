@@ -163,11 +163,11 @@ class GameStatsTest {
             next[0] += 1;
         });
         assertEquals(8, lines.size(), lines.toString());
-        assertEquals("track t=0.00 left 1 (0.00,0.00) up ball (5.00,1.00)", lines.get(0));
-        assertEquals("track t=3.00 left 1 (2.00,0.00) lying ball (5.00,1.00)", lines.get(6));
+        assertEquals("track t=0.00 left 1 (0.00,0.00) up tilt +0 fwd +0 right ball (5.00,1.00)", lines.get(0));
+        assertEquals("track t=3.00 left 1 (2.00,0.00) lying tilt -90 fwd +0 right ball (5.00,1.00)", lines.get(6), "on its back: the torso tilted 90 deg backward");
         assertEquals("track t=0.00 right 4 not on the field ball (5.00,1.00)", lines.get(1));
-        assertEquals("track t=1.00 left 1 (1.00,0.00) up ball (5.00,1.00)", lines.get(2));
-        assertEquals("track t=2.00 left 1 (2.00,0.00) up ball (5.00,1.00)", lines.get(4));
+        assertEquals("track t=1.00 left 1 (1.00,0.00) up tilt +0 fwd +0 right ball (5.00,1.00)", lines.get(2));
+        assertEquals("track t=2.00 left 1 (2.00,0.00) up tilt +0 fwd +0 right ball (5.00,1.00)", lines.get(4));
         assertThrows(IllegalArgumentException.class, () -> GameStats.Tracked.parse("middle:1"));
         assertThrows(IllegalArgumentException.class, () -> GameStats.Tracked.parse("left:12"));
         assertThrows(IllegalArgumentException.class, () -> GameStats.Tracked.parse("left"));

@@ -18,12 +18,17 @@ package phalanx.motion;
  * @param walkLeanDeg         4.5.5 Walk Leaning: how much a full lean (1.0) shortens the leaning
  *                            leg's step, in degrees of hip pitch; the thesis gives no number, 8 deg
  *                            is our choice (a third of a forward step's hip swing)
+ * @param standBeforeSeconds  ours, not in the thesis: before a kick (any keyframe motion but a get-up or dive) the
+ *                            walk, once stopped, stands this long in its crouch so the body is still when it starts;
+ *                            0 kicks at once (docs/matches.md, session 19)
+ * @param standAfterSeconds   ours: after a keyframe motion the walk stands this long in its crouch before it steps;
+ *                            0 steps at once (docs/matches.md, session 19)
  */
 public record MotionConfig(double cycleSeconds, double maxJointSpeed, int latencyCycles,
                            int textPoseCycles, int textPoseStep, double walkSlowdownFactor,
-                           double turnGainMin, double turnGainMax, double walkLeanDeg) {
+                           double turnGainMin, double turnGainMax, double walkLeanDeg, double standBeforeSeconds, double standAfterSeconds) {
 
-    public static final MotionConfig DEFAULT = new MotionConfig(0.02, 6.1395, 1, 2, 1, 1.35, 0.3, 1.0, 8.0);
+    public static final MotionConfig DEFAULT = new MotionConfig(0.02, 6.1395, 1, 2, 1, 1.35, 0.3, 1.0, 8.0, 0.0, 0.0);
 
     public MotionConfig {
         positive(cycleSeconds, "cycleSeconds");
@@ -35,15 +40,27 @@ public record MotionConfig(double cycleSeconds, double maxJointSpeed, int latenc
         positive(turnGainMin, "turnGainMin");
         if (!(turnGainMax >= turnGainMin)) throw new IllegalArgumentException("turnGainMax must be >= turnGainMin, got " + turnGainMax);
         if (!(walkLeanDeg >= 0) || !Double.isFinite(walkLeanDeg)) throw new IllegalArgumentException("walkLeanDeg must be >= 0, got " + walkLeanDeg);
+        if (!(standBeforeSeconds >= 0 && standBeforeSeconds <= 5)) throw new IllegalArgumentException("standBeforeSeconds must be 0-5, got " + standBeforeSeconds);
+        if (!(standAfterSeconds >= 0 && standAfterSeconds <= 5)) throw new IllegalArgumentException("standAfterSeconds must be 0-5, got " + standAfterSeconds);
     }
 
     public MotionConfig withLatencyCycles(int n) {
-        return new MotionConfig(cycleSeconds, maxJointSpeed, n, textPoseCycles, textPoseStep, walkSlowdownFactor, turnGainMin, turnGainMax, walkLeanDeg);
+        return new MotionConfig(cycleSeconds, maxJointSpeed, n, textPoseCycles, textPoseStep, walkSlowdownFactor, turnGainMin, turnGainMax, walkLeanDeg, standBeforeSeconds, standAfterSeconds);
     }
 
     public MotionConfig withTextPose(int cycles, int step) {
-        return new MotionConfig(cycleSeconds, maxJointSpeed, latencyCycles, cycles, step, walkSlowdownFactor, turnGainMin, turnGainMax, walkLeanDeg);
+        return new MotionConfig(cycleSeconds, maxJointSpeed, latencyCycles, cycles, step, walkSlowdownFactor, turnGainMin, turnGainMax, walkLeanDeg, standBeforeSeconds, standAfterSeconds);
     }
+
+    public MotionConfig withStand(double beforeSeconds, double afterSeconds) {
+        return new MotionConfig(cycleSeconds, maxJointSpeed, latencyCycles, textPoseCycles, textPoseStep, walkSlowdownFactor, turnGainMin, turnGainMax, walkLeanDeg, beforeSeconds, afterSeconds);
+    }
+
+    /** Whole cycles of {@link #standBeforeSeconds}. */
+    public int standBeforeCycles() { return (int) Math.round(standBeforeSeconds / cycleSeconds); }
+
+    /** Whole cycles of {@link #standAfterSeconds}. */
+    public int standAfterCycles() { return (int) Math.round(standAfterSeconds / cycleSeconds); }
 
     private static void positive(double v, String name) {
         if (!(v > 0) || !Double.isFinite(v)) throw new IllegalArgumentException(name + " must be > 0, got " + v);

@@ -23,6 +23,8 @@ public final class Body {
     private final int robotType;
     private WalkController walk;
     private boolean keyframeUsed;
+    private int settleLeft;       // cycles the new walk still stands after a keyframe motion
+    private int stoodFor;         // cycles the walk has stood still (not stepping) in a row
     private Odometry odometry = Odometry.NONE;
 
     public Body(MotionController keyframes, WalkConfig walkConfig, MotionConfig motionConfig, int robotType) {
@@ -43,21 +45,31 @@ public final class Body {
         boolean urgent = move instanceof Move.StandUp || move instanceof Move.Dive;
         odometry = Odometry.NONE;
         if (wanted != null && keyframes.playing() == null) {
-            if (keyframeUsed) {       // after a kick, a fall or a dive the gait starts from standing
+            if (keyframeUsed) {       // after a kick, a fall or a dive the gait starts from standing ...
                 walk = newWalk();
                 keyframeUsed = false;
+                settleLeft = motionConfig.standAfterCycles();
             }
-            JointVelocities v = walk.step(p.joints(), p.gyro(), p.acc(), wanted);
-            odometry = walk.odometry();
-            return v;
+            if (settleLeft > 0) {     // ... and stands in its crouch a moment before it steps (MotionConfig)
+                settleLeft--;
+                wanted = WalkVelocity.ZERO;
+            }
+            return walkStep(p, wanted);
         }
-        if (wanted == null && !urgent && walk.walking() && !keyframeUsed) {   // stop before kicking
-            JointVelocities v = walk.step(p.joints(), p.gyro(), p.acc(), WalkVelocity.ZERO);
-            odometry = walk.odometry();
-            return v;
+        // stop before kicking, and stand still a moment (MotionConfig.standBeforeSeconds)
+        if (wanted == null && !urgent && !keyframeUsed && (walk.walking() || stoodFor < motionConfig.standBeforeCycles())) {
+            return walkStep(p, WalkVelocity.ZERO);
         }
         keyframeUsed = true;
         return keyframes.step(p.time(), p.joints(), p.acc(), Locomotion.request(wanted == null ? move : Move.STAND));
+    }
+
+    private JointVelocities walkStep(Perception p, WalkVelocity wanted) {
+        boolean wasWalking = walk.walking();
+        JointVelocities v = walk.step(p.joints(), p.gyro(), p.acc(), wanted);
+        odometry = walk.odometry();
+        stoodFor = wasWalking || walk.walking() ? 0 : stoodFor + 1;   // whole cycles of standing
+        return v;
     }
 
     /** Share of the walk's backward speed limit for {@link Move.StepBack}: a few centimetres, not a retreat. */

@@ -41,6 +41,54 @@ class BodyTest {
         assertEquals(phalanx.motion.control.MotionRequest.NONE, Locomotion.request(new Move.StepBack()));
     }
 
+    /** Cycles from the end of a keyframe "kick" until the walk commands motion, with this settle time. */
+    private static int cyclesUntilStepping(double settleSeconds) throws Exception {
+        String xml = "<motion><phase name=\"A\"><effectors><llj3>10</llj3></effectors><duration>100</duration></phase></motion>";
+        var kick = phalanx.motion.phase.PhaseMotionLoader.parse("kick", "kick.xml",
+                new java.io.ByteArrayInputStream(xml.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        MotionConfig config = MotionConfig.DEFAULT.withStand(0, settleSeconds);
+        Body body = new Body(new MotionController(MotionLibrary.of(kick), config), WalkConfig.DEFAULT, config, 0);
+        int i = 0;
+        body.step(standing(0), new Move.Kick(false, false));
+        while (body.keyframes().playing() != null) body.step(standing(++i * 0.02), Move.STAND);
+        for (int n = 0; n < 200; n++) {
+            body.step(standing(++i * 0.02), new Move.Walk(0, false));
+            if (body.odometry().forward() > 0) return n;
+        }
+        return -1;
+    }
+
+    @Test
+    void afterAKeyframeMotionTheWalkStandsForTheSettleTimeBeforeItSteps() throws Exception {
+        assertEquals(0, cyclesUntilStepping(0), "no settle time: the walk moves in the first cycle");
+        assertEquals(25, cyclesUntilStepping(0.5), "0.5 s: 25 cycles of standing first");
+    }
+
+    /** Cycles between the walk's last step and the start of a kick requested while walking, with this stand time. */
+    private static int cyclesStoodBeforeKick(double standSeconds) throws Exception {
+        String xml = "<motion><phase name=\"A\"><effectors><llj3>10</llj3></effectors><duration>100</duration></phase></motion>";
+        var kick = phalanx.motion.phase.PhaseMotionLoader.parse("kick", "kick.xml",
+                new java.io.ByteArrayInputStream(xml.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        MotionConfig config = MotionConfig.DEFAULT.withStand(standSeconds, 0);
+        Body body = new Body(new MotionController(MotionLibrary.of(kick), config), WalkConfig.DEFAULT, config, 0);
+        int i = 0;
+        for (; i < 50; i++) body.step(standing(i * 0.02), new Move.Walk(0, false));
+        int still = 0;
+        for (; i < 300 && body.keyframes().playing() == null; i++) {
+            body.step(standing(i * 0.02), new Move.Kick(false, false));
+            still = body.odometry().equals(phalanx.motion.walk.Odometry.NONE) ? still + 1 : 0;
+        }
+        return body.keyframes().playing() == null ? -1 : still - 1;   // the cycle the kick started is no stand
+    }
+
+    @Test
+    void aKickRequestedWhileWalkingStartsOnceTheWalkHasStoppedAndStoodTheStandTime() throws Exception {
+        // Odometry is zero once the walk's speed is; the feet then still step back to neutral, so compare the two.
+        int none = cyclesStoodBeforeKick(0);
+        assertTrue(none >= 0 && none < 25, "no stand time: the kick starts once the walk has stopped: " + none);
+        assertEquals(none + 20, cyclesStoodBeforeKick(0.4), "0.4 s: 20 more cycles of standing first");
+    }
+
     @Test
     void kicksAreRequestedByTheFilesOfTheirFoot() {
         assertEquals("kick", Locomotion.request(new Move.Kick(false, false)).motion());
