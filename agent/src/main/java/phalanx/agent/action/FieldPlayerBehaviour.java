@@ -154,6 +154,12 @@ public final class FieldPlayerBehaviour {
         if (shouldGoOnBall(s, wasOnBall)) return wasOnBall ? running : new OnBall(config);
         Vector2 ballGlobal = Facts.ballGlobal(s, config);
         if (home != null && home.isFinite()) {
+            // Ours: at home with the ball unknown, look for it (turn and scan) rather than stand facing the goal
+            // and pan: a ball behind stays out of a pan's view for good (session 19, the approach bench).
+            if (ballGlobal == null && Facts.ball(s, config) == null && runningOwn
+                    && (running instanceof LookForBall || running instanceof WalkToCoordinate w && w.done(s))) {
+                return running instanceof LookForBall l ? l : new LookForBall(config);
+            }
             Vector2 faceTo = ballGlobal != null ? ballGlobal : (s.field() == null ? null : s.field().opponentGoal());
             double theta = faceTo == null || faceTo.distanceTo(home) < 1e-6 ? 0 : faceTo.minus(home).angleDeg();
             if (runningOwn && running instanceof WalkToCoordinate w) {

@@ -144,6 +144,24 @@ class FieldPlayerBehaviourTest {
     }
 
     @Test
+    void atHomeWithTheBallUnknownTheFallbackLooksForItAndGoesOnBallOnceSeen() {
+        FieldPlayerBehaviour b = new FieldPlayerBehaviour(C);
+        // On the way home with the ball unknown: walk there.
+        b.decide(World.at(0, 0, 0).situation(), true, HOME);
+        assertTrue(b.running() instanceof WalkToCoordinate);
+        // Arrived, the ball still unknown: look for it (turn and scan), not stand.
+        World home = World.at(HOME.x(), HOME.y(), 0);
+        b.decide(home.situation(), true, HOME);
+        b.decide(home.situation(), true, HOME);
+        assertTrue(b.running() instanceof LookForBall, b.running().toString());
+        Move m = b.decide(home.situation(), true, HOME).move();
+        assertTrue(m instanceof Move.Turn, "turns to search: " + m);
+        // Seen 2 m away: On Ball.
+        b.decide(World.at(HOME.x(), HOME.y(), 0).ballRel(2, 0).situation(), true, HOME);
+        assertTrue(b.running() instanceof OnBall);
+    }
+
+    @Test
     void onBallFallbackHasHysteresis() {
         FieldPlayerBehaviour b = new FieldPlayerBehaviour(C);
         b.decide(World.at(0, 0, 0).ballAt(2, 0).situation(), true, HOME);
