@@ -200,6 +200,7 @@ public final class ApproachBench {
 
     private Trial trial(int n) throws IOException {
         int falls = 0;
+        if (torso() == null) throw new IOException("player " + o.unum() + " is no longer on the field (its process died? see its log)");
         double[] s = spot(torso());
         if (s == null) {
             double x = -6 + 4 * rnd.nextDouble(), y = -3 + 6 * rnd.nextDouble(), h = -180 + 360 * rnd.nextDouble();
