@@ -84,7 +84,11 @@ public final class BeliefStore {
         this.unum = unum;
         localizer = new SelfLocalizer(field, config);
         selfFilter = config.filter() == LocalizationConfig.Filter.EKF ? new EkfPoseFilter(config) : new FifoPoseFilter(config);
-        ballFilter = new LocalizationFilter(config.fifoMaxSize(), config.ballAgreementMetres(), Double.NaN);
+        // Ours (session 19): the ball's queue relocates like the self filter's, after relocateFrames sightings in a row
+        // that disagree with it and agree with each other (a kicked, rolling or replaced ball), instead of holding the old
+        // place until MaxSize refusals have emptied it.
+        ballFilter = new LocalizationFilter(config.fifoMaxSize(), config.ballAgreementMetres(), Double.NaN, config.relocateFrames(),
+                config.ballAgreementMetres(), Double.NaN, config.relocateSpreadMetres(), Double.NaN);
         ballTracker = new MovingObjectTracker(config.trackSetSize(), config.trackDelay(), 1.0);
         fallDetector = new FallDetector(config);
         tilt = new TiltEstimator(config.accSmoothing(), STEADY_TOLERANCE);
@@ -219,11 +223,14 @@ public final class BeliefStore {
             if (!ball.isUsable()) stats.badPolar++;
             else {
                 ballRelative = camera.toGround(ball);
-                ballTime = time;
                 if (self != null && steady) {
                     Vector2 g = self.toGlobal(ballRelative);
-                    ballFilter.add(g);
+                    // The belief is the queue's average: a sighting the queue refuses does not refresh it, or the old
+                    // place would pass for seen just now and be looked at instead of the ball (session 19).
+                    if (ballFilter.add(g)) ballTime = time;
                     ballTracker.observe(g, time);
+                } else {
+                    ballTime = time;
                 }
             }
         }

@@ -13,7 +13,7 @@ import phalanx.model.field.Vector2;
  * (odometry), so walking does not make the average lag. Fixed arrays, no allocation per update.
  * <p>
  * Also beyond the thesis, and off unless a relocation count is given (the self filter turns it on, the
- * ball's stays the thesis's): <b>relocation</b>. When {@code relocateFrames} refused estimates in a row
+ * ball's too since session 19): <b>relocation</b>. When {@code relocateFrames} refused estimates in a row
  * are each farther than {@code relocateMetres} (or {@code relocateDeg}) from the average and each within
  * {@code spreadMetres} ({@code spreadDeg}) of the one before, the queue is replaced by them: the robot
  * was moved (beam, trainer or referee). Algorithm 1 alone needs MaxSize refusals before its queue is

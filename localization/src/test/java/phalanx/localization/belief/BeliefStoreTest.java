@@ -54,6 +54,30 @@ class BeliefStoreTest {
         }
     }
 
+    private Perception frameWithBall(double t, Pose2 truth, double bx, double by) {
+        return Scenes.perception(t, Scenes.vision(Scenes.landmarks(field, Side.LEFT, truth, RIGHT_END),
+                Scenes.polar(truth, bx, by, 0.042), List.of()));
+    }
+
+    @Test
+    void aBallSeenElsewhereOnceDoesNotRefreshTheOldPlaceAndTwiceInARowMovesTheBelief() {
+        BeliefStore s = store(LocalizationConfig.Filter.EKF);
+        s.update(Scenes.gameState(0, 3, Side.LEFT));
+        Pose2 truth = new Pose2(-5, 2, 7);
+        WorldBelief b = null;
+        for (int i = 1; i <= 10; i++) b = s.update(frameWithBall(i * 0.06, truth, 0, 0));
+        assertEquals(0, b.ballGlobal().norm(), 0.01);
+        // The ball is kicked (or the referee puts it elsewhere): one sighting 3.2 m away is refused by the queue ...
+        b = s.update(frameWithBall(0.66, truth, 3, 1));
+        assertEquals(0, b.ballGlobal().norm(), 0.01, "one sighting does not move the belief (Algorithm 1)");
+        assertEquals(0.06, b.ballAge(), 1e-9, "... and does not pass the old place off as seen just now");
+        // ... the second in a row, near the first, relocates the queue there.
+        b = s.update(frameWithBall(0.72, truth, 3, 1));
+        assertEquals(3, b.ballGlobal().x(), 0.01);
+        assertEquals(1, b.ballGlobal().y(), 0.01);
+        assertEquals(0, b.ballAge(), 1e-9);
+    }
+
     @Test
     void rightSideBeliefsAreInTheTeamsOwnFrame() {
         BeliefStore s = store(LocalizationConfig.Filter.FIFO);
