@@ -458,7 +458,7 @@ public final class GameStats {
     public double[] torso(Side side, int unum) {
         if (unum < 1 || unum > players || !scene.hasScene()) return null;
         MonitorScene.Pose p = scene.torso(unum, side == Side.LEFT ? "Left" : "Right");
-        return p == null ? null : new double[] {p.x(), p.y(), p.upZ(), p.forwardZ(), p.r()[6]};
+        return p == null ? null : new double[] {p.x(), p.y(), p.upZ(), p.forwardZ(), p.rightZ()};
     }
 
     /** The ball in the scene as it stands now, {x, y, z}, or null before the first scene. */

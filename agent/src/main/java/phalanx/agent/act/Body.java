@@ -23,7 +23,8 @@ public final class Body {
     private final int robotType;
     private WalkController walk;
     private boolean keyframeUsed;
-    private int settleLeft;       // cycles the new walk still stands after a keyframe motion
+    private final int standBeforeCycles, standAfterCycles;   // MotionConfig's stand times, in cycles
+    private int standAfterLeft;   // cycles the new walk still stands after a keyframe motion
     private int stoodFor;         // cycles the walk has stood still (not stepping) in a row
     private Odometry odometry = Odometry.NONE;
 
@@ -32,6 +33,8 @@ public final class Body {
         this.walkConfig = walkConfig;
         this.motionConfig = motionConfig;
         this.robotType = robotType;
+        this.standBeforeCycles = motionConfig.standBeforeCycles();
+        this.standAfterCycles = motionConfig.standAfterCycles();
         this.walk = newWalk();
     }
 
@@ -48,16 +51,16 @@ public final class Body {
             if (keyframeUsed) {       // after a kick, a fall or a dive the gait starts from standing ...
                 walk = newWalk();
                 keyframeUsed = false;
-                settleLeft = motionConfig.standAfterCycles();
+                standAfterLeft = standAfterCycles;
             }
-            if (settleLeft > 0) {     // ... and stands in its crouch a moment before it steps (MotionConfig)
-                settleLeft--;
+            if (standAfterLeft > 0) { // ... and stands in its crouch a moment before it steps (MotionConfig)
+                standAfterLeft--;
                 wanted = WalkVelocity.ZERO;
             }
             return walkStep(p, wanted);
         }
         // stop before kicking, and stand still a moment (MotionConfig.standBeforeSeconds)
-        if (wanted == null && !urgent && !keyframeUsed && (walk.walking() || stoodFor < motionConfig.standBeforeCycles())) {
+        if (wanted == null && !urgent && !keyframeUsed && (walk.walking() || stoodFor < standBeforeCycles)) {
             return walkStep(p, WalkVelocity.ZERO);
         }
         keyframeUsed = true;

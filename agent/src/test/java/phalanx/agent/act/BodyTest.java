@@ -41,13 +41,17 @@ class BodyTest {
         assertEquals(phalanx.motion.control.MotionRequest.NONE, Locomotion.request(new Move.StepBack()));
     }
 
-    /** Cycles from the end of a keyframe "kick" until the walk commands motion, with this settle time. */
-    private static int cyclesUntilStepping(double settleSeconds) throws Exception {
+    /** A body whose library holds one short one-phase motion named "kick". */
+    private static Body withKick(MotionConfig config) throws Exception {
         String xml = "<motion><phase name=\"A\"><effectors><llj3>10</llj3></effectors><duration>100</duration></phase></motion>";
         var kick = phalanx.motion.phase.PhaseMotionLoader.parse("kick", "kick.xml",
                 new java.io.ByteArrayInputStream(xml.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
-        MotionConfig config = MotionConfig.DEFAULT.withStand(0, settleSeconds);
-        Body body = new Body(new MotionController(MotionLibrary.of(kick), config), WalkConfig.DEFAULT, config, 0);
+        return new Body(new MotionController(MotionLibrary.of(kick), config), WalkConfig.DEFAULT, config, 0);
+    }
+
+    /** Cycles from the end of a keyframe "kick" until the walk commands motion, with this settle time. */
+    private static int cyclesUntilStepping(double settleSeconds) throws Exception {
+        Body body = withKick(MotionConfig.DEFAULT.withStand(0, settleSeconds));
         int i = 0;
         body.step(standing(0), new Move.Kick(false, false));
         while (body.keyframes().playing() != null) body.step(standing(++i * 0.02), Move.STAND);
@@ -66,11 +70,7 @@ class BodyTest {
 
     /** Cycles between the walk's last step and the start of a kick requested while walking, with this stand time. */
     private static int cyclesStoodBeforeKick(double standSeconds) throws Exception {
-        String xml = "<motion><phase name=\"A\"><effectors><llj3>10</llj3></effectors><duration>100</duration></phase></motion>";
-        var kick = phalanx.motion.phase.PhaseMotionLoader.parse("kick", "kick.xml",
-                new java.io.ByteArrayInputStream(xml.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
-        MotionConfig config = MotionConfig.DEFAULT.withStand(standSeconds, 0);
-        Body body = new Body(new MotionController(MotionLibrary.of(kick), config), WalkConfig.DEFAULT, config, 0);
+        Body body = withKick(MotionConfig.DEFAULT.withStand(standSeconds, 0));
         int i = 0;
         for (; i < 50; i++) body.step(standing(i * 0.02), new Move.Walk(0, false));
         int still = 0;

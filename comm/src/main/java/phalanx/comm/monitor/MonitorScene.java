@@ -21,6 +21,8 @@ public final class MonitorScene {
         public double upZ() { return r[8]; }
         /** Lying on its front (forward axis pointing down) or back (forward axis pointing up)? */
         public double forwardZ() { return r[7]; }
+        /** The torso's right axis' vertical component: positive when the right side is up. */
+        public double rightZ() { return r[6]; }
     }
 
     private Node root;
