@@ -50,10 +50,11 @@ public final class Body {
         if (wanted != null && keyframes.playing() == null) {
             if (keyframeUsed) {       // after a kick, a fall or a dive the gait starts from standing ...
                 walk = newWalk();
+                walk.startFrom(p.joints(), standAfterCycles);
                 keyframeUsed = false;
                 standAfterLeft = standAfterCycles;
             }
-            if (standAfterLeft > 0) { // ... and stands in its crouch a moment before it steps (MotionConfig)
+            if (standAfterLeft > 0) { // ... and stands, easing into its crouch, a moment before it steps (MotionConfig)
                 standAfterLeft--;
                 wanted = WalkVelocity.ZERO;
             }

@@ -68,6 +68,22 @@ class BodyTest {
         assertEquals(25, cyclesUntilStepping(0.5), "0.5 s: 25 cycles of standing first");
     }
 
+    /** The first walk command of the left knee after a keyframe "kick", the joints read at 0 (the walk stands at about -56). */
+    private static double firstKneeCommandAfterKick(double standAfterSeconds) throws Exception {
+        Body body = withKick(MotionConfig.DEFAULT.withStand(0, standAfterSeconds));
+        int i = 0;
+        body.step(standing(0), new Move.Kick(false, false));
+        while (body.keyframes().playing() != null) body.step(standing(++i * 0.02), Move.STAND);
+        return body.step(standing(++i * 0.02), new Move.Walk(0, false)).radPerSecond(Joint.LLJ4);
+    }
+
+    @Test
+    void afterAKeyframeMotionTheWalkEasesFromWhereTheMotionLeftTheJointsDuringItsStand() throws Exception {
+        assertEquals(-6.1395, firstKneeCommandAfterKick(0), 1e-9, "no stand time: the knee snaps to the walk's crouch at the cap");
+        double eased = firstKneeCommandAfterKick(0.4);
+        assertTrue(eased < 0 && eased > -0.61, "0.4 s: the first cycle moves the knee a tenth of the cap at most (0.6 % of 56 deg): " + eased);
+    }
+
     /** Cycles between the walk's last step and the start of a kick requested while walking, with this stand time. */
     private static int cyclesStoodBeforeKick(double standSeconds) throws Exception {
         Body body = withKick(MotionConfig.DEFAULT.withStand(standSeconds, 0));

@@ -53,15 +53,17 @@ class ApproachBenchTest {
     }
 
     @Test
-    void theSummaryTakesMediansOverTouchedTrialsAndCountsLongKicksGoalsAndFalls() {
+    void theSummaryTakesMediansOverTouchedTrialsAndCountsLongKicksGoalsAndFallsApartFromTheBenchsMoves() {
         List<ApproachBench.Trial> trials = List.of(
-                new ApproachBench.Trial(1, 2, 0, "stopped", 4, 7.0, 10, 0),
-                new ApproachBench.Trial(2, 2, 90, "stopped", 8, 9.0, -30, 1),
-                new ApproachBench.Trial(3, 2, 180, "goal", 6, 12.0, 2, 0),
-                new ApproachBench.Trial(4, 2, -90, "untouched", Double.NaN, 0.0, Double.NaN, 2));
+                new ApproachBench.Trial(1, 2, 0, "stopped", 4, 7.0, 10, 0, 1),
+                new ApproachBench.Trial(2, 2, 90, "stopped", 8, 9.0, -30, 1, 0),
+                new ApproachBench.Trial(3, 2, 180, "goal", 6, 12.0, 2, 0, 0),
+                new ApproachBench.Trial(4, 2, -90, "untouched", Double.NaN, 0.0, Double.NaN, 2, 1));
         String s = ApproachBench.summary(trials);
         assertTrue(s.contains("trials=4 touched=3 time_to_touch_median_s=6.0"), s);
-        assertTrue(s.contains("travel_median_m=9.00 over_6m=3 over_8m=2 goals=1 direction_error_median_deg=10.0 falls=3"), s);
+        assertTrue(s.contains("travel_median_m=9.00 over_6m=3 over_8m=2 goals=1 direction_error_median_deg=10.0 falls=3 falls_after_bench_move=2"), s);
+        assertTrue(trials.get(0).line().endsWith("falls 0 (+1 after the bench moved it)"), trials.get(0).line());
+        assertTrue(trials.get(1).line().endsWith("falls 1"), trials.get(1).line());
         assertEquals(7.6, ApproachBench.quantile(new double[]{4, 8, 6}, 0.9), 1e-9);
     }
 

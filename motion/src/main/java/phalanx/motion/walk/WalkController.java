@@ -28,6 +28,8 @@ public final class WalkController {
     private static final double TILT_PULL = 0.02;
     private double pitchForward, rollRight;   // deg, estimated torso tilt
     private double headingError;    // deg: integrated (gyro yaw rate - commanded turn rate) while walking
+    private final double[] from = new double[Joint.COUNT];   // deg: where a keyframe motion left the joints
+    private int blendCycles, blended;   // the targets move from `from` to the gait's over blendCycles cycles
 
     public WalkController(WalkConfig config, int robotType, MotionConfig motion) {
         this.config = config;
@@ -35,6 +37,20 @@ public final class WalkController {
         this.latency = motion.latencyCycles();
         this.generator = new WalkGenerator(config, NaoModel.ofType(robotType), dt);
         for (Joint j : Joint.values()) caps[j.ordinal()] = speedCap(robotType, j, motion.maxJointSpeed());
+    }
+
+    /**
+     * Start from the pose a keyframe motion left (degrees; joints without a reading are not blended):
+     * for the next {@code cycles} cycles the targets go from that pose to the gait's on a cosine ramp,
+     * instead of the joints snapping there at full speed. The kicks and get-ups end in a deeper crouch
+     * than the walk stands in (hip 38°, knee −67° against 32°, −56° for type 0); the snap straightened the
+     * legs and pitched the torso back within a few cycles, while a kick still had it leaning back
+     * (docs/matches.md, session 20). The caller keeps the request at zero meanwhile.
+     */
+    public void startFrom(JointAngles pose, int cycles) {
+        for (Joint j : JOINTS) from[j.ordinal()] = pose != null && pose.has(j) ? pose.degrees(j) : Double.NaN;
+        blendCycles = Math.max(0, cycles);
+        blended = 0;
     }
 
     /**
@@ -81,6 +97,10 @@ public final class WalkController {
             target[Joint.RLJ5.ordinal()] += pitch;
             target[Joint.LLJ2.ordinal()] += roll;
             target[Joint.RLJ2.ordinal()] += roll;
+        }
+        if (blended < blendCycles) {
+            double share = 0.5 - 0.5 * Math.cos(Math.PI * ++blended / blendCycles);
+            for (int i = 0; i < Joint.COUNT; i++) if (!Double.isNaN(from[i])) target[i] = from[i] + share * (target[i] - from[i]);
         }
         for (Joint j : JOINTS) {
             int i = j.ordinal();

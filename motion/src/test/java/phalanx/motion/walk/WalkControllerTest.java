@@ -52,6 +52,28 @@ class WalkControllerTest {
     }
 
     @Test
+    void startingFromAKeyframePoseTheTargetsEaseFromThatPoseToTheGaitsOverTheGivenCycles() {
+        WalkConfig c = noFeedback();
+        MotionConfig noLatency = MotionConfig.DEFAULT.withLatencyCycles(0);   // velocity = (target - reading) / cycle
+        double knee = new WalkGenerator(c, NaoModel.TYPE_0, 0.02).step(WalkVelocity.ZERO)[Joint.LLJ4.ordinal()];
+        double[] d = new double[Joint.COUNT];
+        Arrays.fill(d, Double.NaN);
+        d[Joint.LLJ4.ordinal()] = knee - 10;   // a crouch 10 deg deeper than the walk's, as a kick leaves it
+        JointAngles crouch = new JointAngles(d);
+        // without the ease the knee goes for its target at the cap (10 deg in a cycle is 8.7 rad/s)
+        assertEquals(6.1395, new WalkController(c, 0, noLatency).step(crouch, STILL, UPRIGHT, WalkVelocity.ZERO).radPerSecond(Joint.LLJ4), 1e-9);
+        WalkController w = new WalkController(c, 0, noLatency);
+        w.startFrom(crouch, 20);
+        double[] v = new double[21];
+        for (int k = 1; k <= 20; k++) v[k] = w.step(crouch, STILL, UPRIGHT, WalkVelocity.ZERO).radPerSecond(Joint.LLJ4);
+        // cosine ramp: share 0.5 - 0.5 cos(pi k / 20) of the 10 deg after k cycles
+        assertEquals(Math.toRadians(10 * (0.5 - 0.5 * Math.cos(Math.PI / 20))) / 0.02, v[1], 1e-9);
+        assertEquals(Math.toRadians(5) / 0.02, v[10], 1e-9);
+        assertEquals(6.1395, v[20], 1e-9, "at the end the gait's own target, capped as before");
+        for (int k = 2; k <= 20; k++) assertTrue(v[k] >= v[k - 1], "the ramp only rises: cycle " + k);
+    }
+
+    @Test
     void typeTwoAnkleRollIsCappedAtItsSlowerSpeed() {
         assertEquals(3.47234, WalkController.speedCap(2, Joint.LLJ6, 6.1395), 0);
         assertEquals(6.1395, WalkController.speedCap(2, Joint.RLJ5, 6.1395), 0); // the faster ankle pitch is not used
