@@ -28,6 +28,10 @@ class WalkSearchTest {
         return assertThrows(IllegalArgumentException.class, () -> WalkSearch.space(args)).getMessage();
     }
 
+    private static String cmaesError(String... args) {
+        return assertThrows(IllegalArgumentException.class, () -> WalkSearch.cmaesArguments(args)).getMessage();
+    }
+
     @Test
     void theSpaceStartsAtTheTypesConfigWithWalkConfigsRangesAsLimits() {
         JsonNode s = WalkSearch.space(new String[] {"space", "stepSeconds:0.01,torsoLeanDeg:2"});
@@ -57,6 +61,9 @@ class WalkSearchTest {
         assertTrue(error("space", "stepSeconds:0.01", "--type").contains("--type needs a value"));
         assertTrue(error("space", "stepSeconds:0.01", "--set", "stepSeconds=5").contains("stepSeconds must be in [0.04, 1.0], got 5.0"));
         assertTrue(error("space", "stepSeconds:0.01", "--jobs", "2").contains("space takes only"));
+        assertTrue(cmaesError("cmaes").contains("cmaes needs FIELDS (field:step,...) first"));
+        assertTrue(cmaesError("cmaes", "speed:1").contains("walk config has no field 'speed'"));
+        assertTrue(cmaesError("cmaes", "stepSeconds:0.01", "--log").contains("--log needs a value"));
     }
 
     @Test
