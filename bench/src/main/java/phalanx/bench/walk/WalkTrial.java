@@ -22,7 +22,9 @@ import java.util.Map;
  * {@link WalkController}; each trial is set up with trainer commands on the monitor port and
  * measured with the monitor's scene graph (ground truth): forward speed over 10 s and 60 s,
  * turn rate in place, sideways speed, falls. With {@code --search} it tunes the named config
- * fields by coordinate descent on the forward speed instead, and prints the best config.
+ * fields by coordinate descent on the forward speed instead, and prints the best config; with
+ * {@code --score} it prints that search's score of the config as {@code SCORE s} (the CMA-ES walk
+ * search's evaluator, {@link WalkSearch}).
  */
 public final class WalkTrial {
     private static final boolean TRACE = System.getenv("WALK_TRACE") != null;
@@ -58,13 +60,24 @@ public final class WalkTrial {
     /** What one trial measured. */
     record Result(double seconds, double forward, double left, double turnDeg, boolean fell, double fellAfter) {
         double speed() { return forward / seconds; }
+
+        /**
+         * The tuners' score of one forward trial of {@code searchSeconds} (coordinate descent and CMA-ES alike):
+         * the speed; a fall scores the distance it made over the whole trial's time minus 0.2 m/s; 0.002 off
+         * per degree of heading change (a curving walk is worth less).
+         */
+        double score(double searchSeconds) {
+            double s = fell ? forward / searchSeconds - 0.2 : speed();
+            return s - 0.002 * Math.abs(turnDeg);
+        }
     }
 
     private void run() throws IOException {
         rig = BenchRig.open(opt.host(), opt.monitorPort(), "walk-bench");
         for (int t : opt.types()) {
             connect(t);
-            if (opt.search().isEmpty()) measure(opt.config(t));
+            if (opt.score()) System.out.printf(Locale.ROOT, "SCORE %s type=%d%n", score(opt.config(t)), t);
+            else if (opt.search().isEmpty()) measure(opt.config(t));
             else search(opt.config(t));
             rig.disconnect();
             sleep(300); // let the server drop the player before the next one connects
@@ -175,14 +188,13 @@ public final class WalkTrial {
         return r.fell() ? String.format(Locale.ROOT, "FELL after %.1f s", r.fellAfter()) : "no fall";
     }
 
-    /** Objective of the search: forward speed, a fall costs its lost time and 0.2 m/s. */
+    /** Objective of both searches (--search, and --score for the CMA-ES one): the worst trial's {@link Result#score}. */
     private double score(WalkConfig c) throws IOException {
         double worst = Double.POSITIVE_INFINITY;
         for (int k = 0; k < 2; k++) { // two starts a little apart: the worst counts (the server is deterministic)
             startOffset = k * 0.7;
             Result r = trial(c, new WalkVelocity(c.maxForward(), 0, 0), opt.searchSeconds());
-            double s = r.fell() ? r.forward() / opt.searchSeconds() - 0.2 : r.speed();
-            s -= 0.002 * Math.abs(r.turnDeg()); // a curving walk is worth less
+            double s = r.score(opt.searchSeconds());
             System.out.printf(Locale.ROOT, "  score %.3f  (%.3f m/s, heading %+.0f deg, %s)%n", s, r.speed(), r.turnDeg(), fall(r));
             worst = Math.min(worst, s);
             if (r.fell()) break;

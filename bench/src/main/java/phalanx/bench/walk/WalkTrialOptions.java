@@ -24,10 +24,13 @@ import java.util.Set;
  *                    trials run this many sequences, seeds {@code seed}, {@code seed + 1}, ...
  * @param seed        first seed of the mixed scenario's request sequence ({@link MixedCommands})
  * @param mixedSeconds length of one mixed trial
+ * @param score       instead of trials or a search: the search's score of the config (one type), printed
+ *                    as {@code SCORE s} (the CMA-ES walk search's evaluator)
  */
 public record WalkTrialOptions(String host, int port, int monitorPort, List<Integer> types, List<String> scenarios,
                                Map<String, Double> set, Map<String, Double> search, int rounds, double searchSeconds,
-                               double turnSeconds, double sideSeconds, int starts, long seed, double mixedSeconds) {
+                               double turnSeconds, double sideSeconds, int starts, long seed, double mixedSeconds,
+                               boolean score) {
 
     public static final List<String> SCENARIOS = List.of("forward10", "forward60", "turn", "side", "mixed");
     /** What runs without --scenarios (mixed is asked for by name: a minute per start and type). */
@@ -36,7 +39,7 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
             usage: scripts/phalanx bench walk %s [--type 0,2,4] \
             [--scenarios forward10,forward60,turn,side,mixed] [--set field=value,...] [--search field:step,...] \
             [--rounds 3] [--search-seconds 15] [--turn-seconds 10] [--side-seconds 10] [--starts 1] \
-            [--seed 1] [--mixed-seconds 60]""".formatted(Flags.SERVER_USAGE);
+            [--seed 1] [--mixed-seconds 60] [--score]""".formatted(Flags.SERVER_USAGE);
 
     public static WalkTrialOptions parse(String... args) {
         Flags.Server server = new Flags.Server();
@@ -46,7 +49,8 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
         List<Integer> types = List.of(0, 2, 4);
         List<String> scenarios = DEFAULT_SCENARIOS;
         Map<String, Double> set = new LinkedHashMap<>(), search = new LinkedHashMap<>();
-        for (String[] p : Flags.pairs(args, USAGE, Set.of())) {
+        boolean score = false;
+        for (String[] p : Flags.pairs(args, USAGE, Set.of("--score"))) {
             String flag = p[0], v = p[1];
             if (server.read(flag, v)) continue;
             switch (flag) {
@@ -67,12 +71,15 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
                     scenarios = List.copyOf(s);
                 }
                 case "--set" -> pairs(flag, v, '=', set, false);
-                case "--search" -> pairs(flag, v, ':', search, true);
+                case "--search" -> search.putAll(steps(flag, v));
+                case "--score" -> score = true;
                 default -> throw Flags.unknown(flag, USAGE);
             }
         }
+        if (score && !search.isEmpty()) throw new IllegalArgumentException("--score and --search exclude each other");
+        if (score && types.size() != 1) throw new IllegalArgumentException("--score scores one robot type: give --type with one type, got " + types);
         return new WalkTrialOptions(server.host, server.port, server.monitorPort, types, scenarios, Map.copyOf(set), java.util.Collections.unmodifiableMap(search),
-                rounds, searchSeconds, turnSeconds, sideSeconds, starts, seed, mixedSeconds);
+                rounds, searchSeconds, turnSeconds, sideSeconds, starts, seed, mixedSeconds, score);
     }
 
     /** The default walk config with the {@code --set} overrides; a bad field or value gets its message. */
@@ -83,6 +90,13 @@ public record WalkTrialOptions(String host, int port, int monitorPort, List<Inte
         WalkConfig c = WalkConfig.forType(type);
         for (Map.Entry<String, Double> e : set.entrySet()) c = c.with(e.getKey(), e.getValue());
         return c;
+    }
+
+    /** {@code field:step,...} as {@code --search} takes it (the CMA-ES search's FIELDS too), in order; steps > 0. */
+    static Map<String, Double> steps(String flag, String v) {
+        Map<String, Double> steps = new LinkedHashMap<>();
+        pairs(flag, v, ':', steps, true);
+        return steps;
     }
 
     private static void pairs(String flag, String v, char sep, Map<String, Double> into, boolean positive) {

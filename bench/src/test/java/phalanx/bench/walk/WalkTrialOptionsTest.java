@@ -40,6 +40,8 @@ class WalkTrialOptionsTest {
         assertEquals(List.of("mixed"), m.scenarios());
         assertEquals(7, m.seed());
         assertEquals(30, m.mixedSeconds());
+        assertTrue(WalkTrialOptions.parse("--score", "--type", "2").score());
+        assertFalse(m.score());
     }
 
     @Test
@@ -60,6 +62,8 @@ class WalkTrialOptionsTest {
         assertTrue(error("--seed", "-1").contains("--seed must be in"));
         assertTrue(error("--seed", "one").contains("--seed needs a whole number, got 'one'"));
         assertTrue(error("--mixed-seconds", "0").contains("--mixed-seconds must be in"));
+        assertTrue(error("--score", "--type", "0", "--search", "stepHeight:0.01").contains("--score and --search exclude each other"));
+        assertTrue(error("--score").contains("--score scores one robot type: give --type with one type, got [0, 2, 4]"));
         assertTrue(error("--help").startsWith("usage: scripts/phalanx bench walk"));
     }
 }

@@ -76,6 +76,42 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
     public static final java.util.List<String> FIELDS = java.util.Arrays.stream(WalkConfig.class.getRecordComponents())
             .map(java.lang.reflect.RecordComponent::getName).toList();
 
+    /** Each field's allowed range [min, max] (the constructor refuses a value outside); before DEFAULT, which is checked against it. */
+    private static final java.util.Map<String, double[]> RANGES = java.util.Map.ofEntries(
+            java.util.Map.entry("stepSeconds", new double[] {0.04, 1.0}),
+            java.util.Map.entry("doubleSupport", new double[] {0, 0.8}),
+            java.util.Map.entry("stepHeight", new double[] {0, 0.1}),
+            java.util.Map.entry("liftExponent", new double[] {0.5, 4}),
+            java.util.Map.entry("swingMatchGround", new double[] {0, 1.5}),
+            java.util.Map.entry("swingLinear", new double[] {0, 1}),
+            java.util.Map.entry("legExtension", new double[] {0.5, 1.0}),
+            java.util.Map.entry("footForward", new double[] {-0.1, 0.1}),
+            java.util.Map.entry("stanceWidth", new double[] {-0.02, 0.1}),
+            java.util.Map.entry("torsoLeanDeg", new double[] {-30, 45}),
+            java.util.Map.entry("swayAmplitude", new double[] {0, 0.1}),
+            java.util.Map.entry("swayLead", new double[] {-0.5, 0.5}),
+            java.util.Map.entry("maxForward", new double[] {0, 3}),
+            java.util.Map.entry("maxBackward", new double[] {0, 3}),
+            java.util.Map.entry("maxLeft", new double[] {0, 3}),
+            java.util.Map.entry("maxTurnDeg", new double[] {0, 720}),
+            java.util.Map.entry("accelForward", new double[] {1e-3, 100}),
+            java.util.Map.entry("accelLeft", new double[] {1e-3, 100}),
+            java.util.Map.entry("accelTurnDeg", new double[] {1e-3, 10000}),
+            java.util.Map.entry("decelForward", new double[] {1e-3, 100}),
+            java.util.Map.entry("turnAtFullSpeedDeg", new double[] {0, 720}),
+            java.util.Map.entry("maxFootYawDeg", new double[] {0, 80}),
+            java.util.Map.entry("servoGain", new double[] {0.05, 1.5}),
+            java.util.Map.entry("gyroPitchGain", new double[] {-1, 1}),
+            java.util.Map.entry("gyroRollGain", new double[] {-1, 1}),
+            java.util.Map.entry("gyroYawGain", new double[] {0, 20}),
+            java.util.Map.entry("tiltPlaceForward", new double[] {-0.05, 0.05}),
+            java.util.Map.entry("tiltPlaceLeft", new double[] {-0.05, 0.05}),
+            java.util.Map.entry("tiltHipPitch", new double[] {-5, 5}),
+            java.util.Map.entry("armSwingDeg", new double[] {-2000, 2000}),
+            java.util.Map.entry("odometryForward", new double[] {0, 2}),
+            java.util.Map.entry("odometryLeft", new double[] {0, 2}),
+            java.util.Map.entry("odometryTurn", new double[] {0, 2}));
+
     /** The tuned walk (see motion/README.md for the measured figures and the command). */
     public static final WalkConfig DEFAULT = new WalkConfig(
             // timing and swing: stepSeconds, doubleSupport, stepHeight, liftExponent, swingMatchGround, swingLinear
@@ -107,43 +143,51 @@ public record WalkConfig(double stepSeconds, double doubleSupport, double stepHe
     private static final java.util.Map<Integer, WalkConfig> TYPE_OVERRIDES = java.util.Map.of();
 
     public WalkConfig {
-        range(stepSeconds, 0.04, 1.0, "stepSeconds");
-        range(doubleSupport, 0, 0.8, "doubleSupport");
-        range(stepHeight, 0, 0.1, "stepHeight");
-        range(liftExponent, 0.5, 4, "liftExponent");
-        range(swingMatchGround, 0, 1.5, "swingMatchGround");
-        range(swingLinear, 0, 1, "swingLinear");
-        range(legExtension, 0.5, 1.0, "legExtension");
-        range(footForward, -0.1, 0.1, "footForward");
-        range(stanceWidth, -0.02, 0.1, "stanceWidth");
-        range(torsoLeanDeg, -30, 45, "torsoLeanDeg");
-        range(swayAmplitude, 0, 0.1, "swayAmplitude");
-        range(swayLead, -0.5, 0.5, "swayLead");
-        range(maxForward, 0, 3, "maxForward");
-        range(maxBackward, 0, 3, "maxBackward");
-        range(maxLeft, 0, 3, "maxLeft");
-        range(maxTurnDeg, 0, 720, "maxTurnDeg");
-        range(accelForward, 1e-3, 100, "accelForward");
-        range(accelLeft, 1e-3, 100, "accelLeft");
-        range(accelTurnDeg, 1e-3, 10000, "accelTurnDeg");
-        range(decelForward, 1e-3, 100, "decelForward");
-        range(turnAtFullSpeedDeg, 0, 720, "turnAtFullSpeedDeg");
-        range(maxFootYawDeg, 0, 80, "maxFootYawDeg");
-        range(servoGain, 0.05, 1.5, "servoGain");
-        range(gyroPitchGain, -1, 1, "gyroPitchGain");
-        range(gyroRollGain, -1, 1, "gyroRollGain");
-        range(gyroYawGain, 0, 20, "gyroYawGain");
-        range(tiltPlaceForward, -0.05, 0.05, "tiltPlaceForward");
-        range(tiltPlaceLeft, -0.05, 0.05, "tiltPlaceLeft");
-        range(tiltHipPitch, -5, 5, "tiltHipPitch");
-        range(armSwingDeg, -2000, 2000, "armSwingDeg");
-        range(odometryForward, 0, 2, "odometryForward");
-        range(odometryLeft, 0, 2, "odometryLeft");
-        range(odometryTurn, 0, 2, "odometryTurn");
+        range(stepSeconds, "stepSeconds");
+        range(doubleSupport, "doubleSupport");
+        range(stepHeight, "stepHeight");
+        range(liftExponent, "liftExponent");
+        range(swingMatchGround, "swingMatchGround");
+        range(swingLinear, "swingLinear");
+        range(legExtension, "legExtension");
+        range(footForward, "footForward");
+        range(stanceWidth, "stanceWidth");
+        range(torsoLeanDeg, "torsoLeanDeg");
+        range(swayAmplitude, "swayAmplitude");
+        range(swayLead, "swayLead");
+        range(maxForward, "maxForward");
+        range(maxBackward, "maxBackward");
+        range(maxLeft, "maxLeft");
+        range(maxTurnDeg, "maxTurnDeg");
+        range(accelForward, "accelForward");
+        range(accelLeft, "accelLeft");
+        range(accelTurnDeg, "accelTurnDeg");
+        range(decelForward, "decelForward");
+        range(turnAtFullSpeedDeg, "turnAtFullSpeedDeg");
+        range(maxFootYawDeg, "maxFootYawDeg");
+        range(servoGain, "servoGain");
+        range(gyroPitchGain, "gyroPitchGain");
+        range(gyroRollGain, "gyroRollGain");
+        range(gyroYawGain, "gyroYawGain");
+        range(tiltPlaceForward, "tiltPlaceForward");
+        range(tiltPlaceLeft, "tiltPlaceLeft");
+        range(tiltHipPitch, "tiltHipPitch");
+        range(armSwingDeg, "armSwingDeg");
+        range(odometryForward, "odometryForward");
+        range(odometryLeft, "odometryLeft");
+        range(odometryTurn, "odometryTurn");
     }
 
-    private static void range(double v, double min, double max, String name) {
+    private static void range(double v, String name) {
+        double min = RANGES.get(name)[0], max = RANGES.get(name)[1];
         if (!(v >= min && v <= max)) throw new IllegalArgumentException("walk config " + name + " must be in [" + min + ", " + max + "], got " + v);
+    }
+
+    /** The range [min, max] a field may take (a copy); an unknown name is refused with a message naming it. */
+    public static double[] range(String field) {
+        double[] r = RANGES.get(field);
+        if (r == null) throw new IllegalArgumentException("walk config has no field '" + field + "' (fields: " + FIELDS + ")");
+        return r.clone();
     }
 
 

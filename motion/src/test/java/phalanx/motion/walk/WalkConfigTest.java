@@ -23,6 +23,20 @@ class WalkConfigTest {
     }
 
     @Test
+    void everyFieldHasTheRangeTheConstructorChecks() {
+        assertArrayEquals(new double[] {0, 0.8}, WalkConfig.range("doubleSupport"));
+        for (String f : WalkConfig.FIELDS) {
+            double[] r = WalkConfig.range(f);
+            assertTrue(r[0] <= WalkConfig.DEFAULT.get(f) && WalkConfig.DEFAULT.get(f) <= r[1], f);
+            WalkConfig.DEFAULT.with(f, r[0]);   // both ends are allowed
+            WalkConfig.DEFAULT.with(f, r[1]);
+            assertThrows(IllegalArgumentException.class, () -> WalkConfig.DEFAULT.with(f, r[1] + 1e-6), f);
+        }
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> WalkConfig.range("stepLength"));
+        assertTrue(e.getMessage().contains("no field 'stepLength'"), e.getMessage());
+    }
+
+    @Test
     void describeListsEveryField() {
         String d = WalkConfig.DEFAULT.describe();
         for (String f : WalkConfig.FIELDS) assertTrue(d.contains(f + "="), f);
