@@ -31,7 +31,7 @@ class ParallelTournamentTest {
     private static final Path RES = Path.of("match/src/test/resources/tournament").toAbsolutePath();
 
     private static void needParallel() {
-        assumeTrue(ParallelTournament.available(),
+        assumeTrue(ParallelHosts.available(),
                 "GNU parallel is not installed (Debian package parallel; scripts/setup.sh installs it): the tournament's --jobs/--hosts path is not tested");
     }
 
