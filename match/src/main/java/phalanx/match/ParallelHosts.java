@@ -50,11 +50,23 @@ public final class ParallelHosts {
     }
 
     /**
-     * parallel's options for the hosts of {@code hosts}: log in through tournament-ssh of {@code root}, run each
-     * job in {@code workdir} (relative to the host's home). The caller adds --transferfile/--return/--cleanup.
+     * parallel's options for the hosts of {@code hosts}, {@code jobs} at a time on each host that has no
+     * {@code N/} of its own: log in through tournament-ssh of {@code root}, run each job in {@code workdir}
+     * (relative to the host's home). The caller adds --transferfile/--return/--cleanup, and no --jobs of
+     * its own. parallel reads N/ as the host's number of cores and runs --jobs per host whatever N says
+     * (20221122: with --jobs 1, 2/h1 runs one job), so the hosts go to {@code dir}/sshloginfile with
+     * {@code jobs/} in front of every line without N/, and parallel runs --jobs 100% (N per host).
      */
-    public static List<String> sshOptions(Path hosts, Path root, String workdir) {
-        return List.of("--sshloginfile", hosts.toAbsolutePath().toString(),
+    public static List<String> sshOptions(Path hosts, int jobs, Path root, String workdir, Path dir) throws IOException {
+        StringBuilder sb = new StringBuilder();
+        for (String line : Files.readAllLines(hosts, StandardCharsets.UTF_8)) {
+            String l = line.strip();
+            boolean host = !l.isEmpty() && !l.startsWith("#") && !l.startsWith("@") && !l.matches("\\d+/.*");
+            sb.append(host ? jobs + "/" + l : l).append('\n');
+        }
+        Path file = dir.toAbsolutePath().resolve("sshloginfile");
+        Files.writeString(file, sb.toString(), StandardCharsets.UTF_8);
+        return List.of("--sshloginfile", file.toString(), "--jobs", "100%",
                 "--ssh", root.toAbsolutePath().resolve("scripts/lib/tools/tournament-ssh").toString(), "--workdir", workdir);
     }
 

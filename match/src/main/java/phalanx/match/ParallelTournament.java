@@ -101,18 +101,18 @@ final class ParallelTournament {
         return sb.toString();
     }
 
-    /** The parallel command line. */
-    static List<String> command(Plan p) {
+    /** The parallel command line (with --hosts it writes DIR/sshloginfile). */
+    static List<String> command(Plan p) throws IOException {
         Path out = p.out().toAbsolutePath();
         List<String> c = new ArrayList<>(List.of("parallel", "--colsep", "\\t", "--joblog", out.resolve("joblog").toString(),
-                "--resume-failed", "--retries", Integer.toString(p.retries()), "--termseq", TERMSEQ, "--jobs", Integer.toString(p.jobs())));
+                "--resume-failed", "--retries", Integer.toString(p.retries()), "--termseq", TERMSEQ));
         if (p.hosts() != null) {
             // On a host the job runs in ~/phalanx-tournaments/<this folder's name>; what --return names
             // comes back here, the rest (server and team logs) stays there.
-            c.addAll(ParallelHosts.sshOptions(p.hosts(), p.root(), "phalanx-tournaments/" + out.getFileName()));
+            c.addAll(ParallelHosts.sshOptions(p.hosts(), p.jobs(), p.root(), "phalanx-tournaments/" + out.getFileName(), out));
             c.addAll(List.of("--return", "{1}.json", "--return", "{1}.out", "--return", "{2}/monitor.log.gz", "--cleanup"));
         } else {
-            c.addAll(List.of("-S", ":"));
+            c.addAll(List.of("-S", ":", "--jobs", Integer.toString(p.jobs())));
         }
         if (!p.quiet()) c.addAll(List.of("--line-buffer", "--tagstring", "{1}"));
         c.addAll(List.of("-a", out.resolve("jobs.tsv").toString(), template(p)));
