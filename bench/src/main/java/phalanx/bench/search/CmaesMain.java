@@ -25,7 +25,7 @@ public final class CmaesMain {
             "  --space FILE        {\"start\": {every parameter}, \"keys\": [searched], \"step\": {key: step}, \"limits\": {key: [lo, hi]}}",
             "  --eval CMD          shell command scoring one candidate: {params} = its JSON file; prints 'SCORE <number>'",
             "                      (higher is better); SEARCH_SLOT = its job slot 0..jobs-1 in the environment",
-            "  --jobs N            evaluations at a time (1)",
+            "  --jobs N            evaluations at a time (1); with --hosts, on each host without N/",
             "  --log FILE          evaluation log (JSON lines); an existing one is resumed (none)",
             "  --seed N            random seed (1)",
             "  --generations N     generation budget (30)",
@@ -64,14 +64,15 @@ public final class CmaesMain {
         long seed = longValue(o, "seed", 1), timeout = longValue(o, "timeout", 900);
         double sigma = number(o, "sigma", 1.0);
         try {
+            CommandEvaluator.Hosts hosts = hosts(o);
             Path work = o.containsKey("work") ? Path.of(o.get("work")) : Files.createTempDirectory("cmaes-");
-            CommandEvaluator evaluator = new CommandEvaluator(eval, jobs, timeout, work, o.containsKey("parallel"), hosts(o));
+            CommandEvaluator evaluator = new CommandEvaluator(eval, jobs, timeout, work, o.containsKey("parallel"), hosts);
             Map<String, Object> start = new LinkedHashMap<>();
             CmaesSearch.Space space = readSpace(Path.of(spaceFile), start);
             CmaesSearch.Settings settings = new CmaesSearch.Settings(sigma, lambda, seed, generations, maxEvals);
             CmaesSearch search = new CmaesSearch(space, settings, start, o.containsKey("log") ? Path.of(o.get("log")) : null);
             System.out.println("cmaes: " + space.keys().size() + " parameters " + space.keys() + ", lambda " + search.lambda()
-                    + ", seed " + seed + ", " + jobs + " job(s)" + (o.containsKey("hosts") ? " a host through GNU parallel on " + o.get("hosts")
+                    + ", seed " + seed + ", " + jobs + " job(s)" + (hosts != null ? " on each host without N/ of " + o.get("hosts") + ", through GNU parallel"
                     : o.containsKey("parallel") ? " through GNU parallel" : "") + (o.containsKey("log") ? ", log " + o.get("log") : ""));
             if (!search.evaluations().isEmpty())
                 System.out.println("cmaes: resuming from " + search.evaluations().size() + " logged evaluations");

@@ -171,8 +171,8 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
         // killed run left there is removed, so that no old output is read as this batch's
         Path dir = workDir.resolve("batch-" + (++batches)).toAbsolutePath();
         if (Files.isDirectory(dir)) {
-            try (var old = Files.list(dir)) {
-                for (Path f : (Iterable<Path>) old::iterator) Files.delete(f);
+            try (var old = Files.walk(dir)) {
+                for (Path f : (Iterable<Path>) old.sorted(java.util.Comparator.reverseOrder())::iterator) if (!f.equals(dir)) Files.delete(f);
             }
         }
         Files.createDirectories(dir);
@@ -203,6 +203,8 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
         cmd.add(":::");
         cmd.addAll(files);
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("parallel.out").toFile());
+        // a ':' line of the hosts file runs its jobs here, in --workdir under parallel's folder: this batch's
+        if (hosts != null) pb.directory(dir.toFile());
         pb.environment().put("SEARCH_EVAL", command);
         if (hosts != null) ParallelHosts.environment(pb.environment(), failures, hosts.ssh(), "batch-" + batches + "/cand-%d");
         long failuresBefore = Files.exists(failures) ? Files.readAllLines(failures).size() : 0;
