@@ -14,6 +14,8 @@ import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 
+import static phalanx.match.ParallelHosts.quote;
+
 /**
  * The {@code --jobs N} / {@code --hosts FILE} path of scripts/phalanx tournament: every game is one GNU
  * parallel job. The games go to DIR/jobs.tsv (tag, game folder, the two team specs, one game a line) and
@@ -84,9 +86,6 @@ final class ParallelTournament {
         return t.label() + "=" + t.template();
     }
 
-    /** Single quotes for the shell. */
-    static String quote(String s) { return "'" + s.replace("'", "'\\''") + "'"; }
-
     /**
      * The command parallel runs per game ({1} tag, {2} game folder, {3} {4} teams, {%} job slot). It starts
      * with {@code exec}: on a remote host parallel's wrapper sends SIGTERM to the job and, as soon as the
@@ -95,47 +94,29 @@ final class ParallelTournament {
      * killed before it stopped its server and teams. With exec, that shell is tournament-job, which waits.
      */
     static String template(Plan p) {
-        String r = p.remoteRoot();
-        String root = r.startsWith("/") ? quote(r) : "~/" + quote(r);
-        StringBuilder sb = new StringBuilder("exec bash ").append(root).append("/scripts/lib/tools/tournament-job {1} {2} {%} ")
+        StringBuilder sb = new StringBuilder("exec bash ").append(ParallelHosts.tool(p.remoteRoot(), "tournament-job")).append(" {1} {2} {%} ")
                 .append(quote(p.out().toAbsolutePath().toString())).append(p.quiet() ? " 1" : " 0").append(" -- ")
                 .append(p.gameCommand()).append(" --left {3} --right {4}");
         for (String a : p.matchArgs()) sb.append(' ').append(quote(a));
         return sb.toString();
     }
 
-    /** The parallel command line. */
-    static List<String> command(Plan p) {
+    /** The parallel command line (with --hosts it writes DIR/sshloginfile). */
+    static List<String> command(Plan p) throws IOException {
         Path out = p.out().toAbsolutePath();
         List<String> c = new ArrayList<>(List.of("parallel", "--colsep", "\\t", "--joblog", out.resolve("joblog").toString(),
-                "--resume-failed", "--retries", Integer.toString(p.retries()), "--termseq", TERMSEQ, "--jobs", Integer.toString(p.jobs())));
+                "--resume-failed", "--retries", Integer.toString(p.retries()), "--termseq", TERMSEQ));
         if (p.hosts() != null) {
-            c.addAll(List.of("--sshloginfile", p.hosts().toAbsolutePath().toString(),
-                    "--ssh", p.root().toAbsolutePath().resolve("scripts/lib/tools/tournament-ssh").toString(),
-                    // On a host the job runs in ~/phalanx-tournaments/<this folder's name>; what --return names
-                    // comes back here, the rest (server and team logs) stays there.
-                    "--workdir", "phalanx-tournaments/" + out.getFileName(),
-                    "--return", "{1}.json", "--return", "{1}.out", "--return", "{2}/monitor.log.gz", "--cleanup"));
+            // On a host the job runs in ~/phalanx-tournaments/<this folder's name>; what --return names
+            // comes back here, the rest (server and team logs) stays there.
+            c.addAll(ParallelHosts.sshOptions(p.hosts(), p.jobs(), p.root(), "phalanx-tournaments/" + out.getFileName(), out));
+            c.addAll(List.of("--return", "{1}.json", "--return", "{1}.out", "--return", "{2}/monitor.log.gz", "--cleanup"));
         } else {
-            c.addAll(List.of("-S", ":"));
+            c.addAll(List.of("-S", ":", "--jobs", Integer.toString(p.jobs())));
         }
         if (!p.quiet()) c.addAll(List.of("--line-buffer", "--tagstring", "{1}"));
         c.addAll(List.of("-a", out.resolve("jobs.tsv").toString(), template(p)));
         return c;
-    }
-
-    /** True when GNU parallel runs here (not moreutils' program of the same name). */
-    static boolean available() {
-        try {
-            Process p = new ProcessBuilder("parallel", "--version").redirectErrorStream(true).start();
-            String v = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-            return p.waitFor(20, TimeUnit.SECONDS) && p.exitValue() == 0 && v.contains("GNU parallel");
-        } catch (IOException e) {
-            return false;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return false;
-        }
     }
 
     /**
@@ -143,7 +124,7 @@ final class ParallelTournament {
      * returns its exit status: 0 when every game was played, else the number of games still unplayed.
      */
     static int run(Plan p, PrintStream print) throws IOException {
-        if (!available()) {
+        if (!ParallelHosts.available()) {
             throw new IllegalStateException("tournament: --jobs and --hosts need GNU parallel (Debian package parallel; scripts/setup.sh installs it)");
         }
         Path out = p.out().toAbsolutePath();
@@ -160,12 +141,7 @@ final class ParallelTournament {
         }
         ProcessBuilder pb = new ProcessBuilder(command(p)).directory(out.toFile()).inheritIO();
         pb.redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
-        pb.environment().put("PHALANX_TOURNAMENT_FAILURES", out.resolve("failures.log").toString());
-        if (p.ssh() != null) pb.environment().put("PHALANX_TOURNAMENT_SSH", p.ssh());
-        // parallel's remote worker runs each job with the shell it names here, else with the remote's $SHELL,
-        // and with neither set (a CI job has no SHELL; so had the stand-in ssh of the tests) it runs nothing
-        // and reports success (GNU parallel 20221122; match/README.md)
-        pb.environment().put("PARALLEL_SHELL", "/bin/bash");
+        ParallelHosts.environment(pb.environment(), out.resolve("failures.log"), p.ssh(), "game-%02d");
         Process proc = pb.start();
         Thread hook = new Thread(() -> {
             if (proc.isAlive()) {

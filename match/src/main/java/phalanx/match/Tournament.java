@@ -87,16 +87,13 @@ public final class Tournament {
             Files.createDirectories(out);
             boolean distributed = a.get("jobs", null) != null || a.get("hosts", null) != null;
             if (distributed) {
-                // The checkout (scripts/lib/run-java sets phalanx.root): each job runs its game from there.
-                Path root = Path.of(System.getProperty("phalanx.root", System.getProperty("user.dir"))).toAbsolutePath();
+                Path root = ParallelHosts.checkout();   // each job runs its game from there
                 ParallelTournament.Plan plan = new ParallelTournament.Plan(fixtures, out, root,
                         a.get("remote-dir", root.toString()), a.get("game-command", "scripts/phalanx match"),
                         ParallelTournament.matchArgs(argv), a.integer("jobs", 1, 1, MatchOptions.MAX_PORT_SLOT),
                         a.get("hosts", null) == null ? null : Path.of(a.get("hosts", null)), a.integer("retries", 3, 1, 100),
                         a.get("ssh", null), a.flag("quiet"));
-                if (plan.hosts() != null && !Files.isRegularFile(plan.hosts())) {
-                    throw new IllegalArgumentException("tournament: --hosts " + plan.hosts() + " is not a file");
-                }
+                if (plan.hosts() != null) ParallelHosts.checkHostsFile(plan.hosts(), "tournament: ");
                 MatchOptions.config(a, teams.get(0), teams.get(1), out, out.resolve("x.json")); // checks the options now
                 int missing = ParallelTournament.run(plan, System.out);
                 boolean any;

@@ -31,7 +31,7 @@ class ParallelTournamentTest {
     private static final Path RES = Path.of("match/src/test/resources/tournament").toAbsolutePath();
 
     private static void needParallel() {
-        assumeTrue(ParallelTournament.available(),
+        assumeTrue(ParallelHosts.available(),
                 "GNU parallel is not installed (Debian package parallel; scripts/setup.sh installs it): the tournament's --jobs/--hosts path is not tested");
     }
 
@@ -80,7 +80,7 @@ class ParallelTournamentTest {
     }
 
     @Test
-    void theJobCommandPassesOnlyTheMatchOptionsAndRefusesFixedPorts() {
+    void theJobCommandPassesOnlyTheMatchOptionsAndRefusesFixedPorts() throws IOException {
         String[] argv = {"--team", "A=a {port}", "--jobs", "2", "--half-time", "60", "--sync", "--out", "/tmp/x", "--quiet",
                 "--halves", "1", "--game-command", "g", "--round-robin"};
         assertEquals(List.of("--half-time", "60", "--sync", "--halves", "1"), ParallelTournament.matchArgs(argv));
@@ -99,6 +99,20 @@ class ParallelTournamentTest {
         List<String> c = ParallelTournament.command(plan);
         assertTrue(String.join(" ", c).contains("--joblog /tmp/t o/joblog --resume-failed --retries 3"), c.toString());
         assertTrue(c.containsAll(List.of("-S", ":")) && !c.contains("--return"), c.toString());
+    }
+
+    /** parallel takes 2/ in 2/h1 for h1's cores and runs --jobs there: a host's own N/ must win over --jobs. */
+    @Test
+    void aHostsOwnJobCountWinsOverJobs() throws IOException {
+        Path hosts = tmp.resolve("hosts");
+        Files.writeString(hosts, "# here and two others\n2/h1\nme@h2\n:\n");
+        ParallelTournament.Plan plan = new ParallelTournament.Plan(List.of(), tmp.resolve("t"), Path.of("/src"), "phalanx", "g",
+                List.of(), 3, hosts, 3, null, true);
+        Files.createDirectories(plan.out());
+        List<String> c = ParallelTournament.command(plan);
+        assertEquals("# here and two others\n2/h1\n3/me@h2\n3/:\n", Files.readString(tmp.resolve("t/sshloginfile")));
+        assertEquals("100%", c.get(c.indexOf("--jobs") + 1), c.toString());
+        assertEquals(tmp.resolve("t/sshloginfile").toString(), c.get(c.indexOf("--sshloginfile") + 1));
     }
 
     @Test

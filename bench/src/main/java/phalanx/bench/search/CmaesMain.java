@@ -11,6 +11,7 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import phalanx.match.ParallelHosts;
 
 /**
  * Command line of the CMA-ES search (issue 21); {@code scripts/phalanx bench kick-search cmaes} builds the
@@ -24,7 +25,7 @@ public final class CmaesMain {
             "  --space FILE        {\"start\": {every parameter}, \"keys\": [searched], \"step\": {key: step}, \"limits\": {key: [lo, hi]}}",
             "  --eval CMD          shell command scoring one candidate: {params} = its JSON file; prints 'SCORE <number>'",
             "                      (higher is better); SEARCH_SLOT = its job slot 0..jobs-1 in the environment",
-            "  --jobs N            evaluations at a time (1)",
+            "  --jobs N            evaluations at a time (1); with --hosts, on each host without N/",
             "  --log FILE          evaluation log (JSON lines); an existing one is resumed (none)",
             "  --seed N            random seed (1)",
             "  --generations N     generation budget (30)",
@@ -34,7 +35,13 @@ public final class CmaesMain {
             "  --timeout S         seconds one evaluation may take (900)",
             "  --best FILE         the best candidate's parameters (every key), as JSON",
             "  --work DIR          the candidates' files (a temporary folder)",
-            "  --parallel          run each generation's candidates through GNU parallel (-j N, local) instead of threads");
+            "  --parallel          run each generation's candidates through GNU parallel (-j N, here) instead of threads",
+            "  --hosts FILE        ... on other machines: parallel's --sshloginfile, one [N/][user@]host a line (N jobs there,",
+            "                      else --jobs), ':' for this one; the command runs from each host's checkout, SEARCH_SLOT",
+            "                      0..N-1 per host; a candidate that fails on a host is tried on another (WORK/failures.log)",
+            "  --retries N         with --hosts: tries per candidate, each on another host when there is one (3)",
+            "  --ssh CMD           with --hosts: the ssh command (ssh)",
+            "  --remote-dir D      with --hosts: the checkout on the hosts (this checkout's path; relative: from the home)");
 
     private CmaesMain() {}
 
@@ -57,14 +64,16 @@ public final class CmaesMain {
         long seed = longValue(o, "seed", 1), timeout = longValue(o, "timeout", 900);
         double sigma = number(o, "sigma", 1.0);
         try {
+            CommandEvaluator.Hosts hosts = hosts(o);
             Path work = o.containsKey("work") ? Path.of(o.get("work")) : Files.createTempDirectory("cmaes-");
-            CommandEvaluator evaluator = new CommandEvaluator(eval, jobs, timeout, work, o.containsKey("parallel"));
+            CommandEvaluator evaluator = new CommandEvaluator(eval, jobs, timeout, work, o.containsKey("parallel"), hosts);
             Map<String, Object> start = new LinkedHashMap<>();
             CmaesSearch.Space space = readSpace(Path.of(spaceFile), start);
             CmaesSearch.Settings settings = new CmaesSearch.Settings(sigma, lambda, seed, generations, maxEvals);
             CmaesSearch search = new CmaesSearch(space, settings, start, o.containsKey("log") ? Path.of(o.get("log")) : null);
             System.out.println("cmaes: " + space.keys().size() + " parameters " + space.keys() + ", lambda " + search.lambda()
-                    + ", seed " + seed + ", " + jobs + " job(s)" + (o.containsKey("parallel") ? " through GNU parallel" : "") + (o.containsKey("log") ? ", log " + o.get("log") : ""));
+                    + ", seed " + seed + ", " + jobs + " job(s)" + (hosts != null ? " on each host without N/ of " + o.get("hosts") + ", through GNU parallel"
+                    : o.containsKey("parallel") ? " through GNU parallel" : "") + (o.containsKey("log") ? ", log " + o.get("log") : ""));
             if (!search.evaluations().isEmpty())
                 System.out.println("cmaes: resuming from " + search.evaluations().size() + " logged evaluations");
             CmaesSearch.Result r;
@@ -95,7 +104,20 @@ public final class CmaesMain {
     }
 
     private static final List<String> FLAGS = List.of("space", "eval", "jobs", "log", "seed", "generations", "max-evals",
-            "lambda", "sigma", "timeout", "best", "work");
+            "lambda", "sigma", "timeout", "best", "work", "hosts", "retries", "ssh", "remote-dir");
+
+    /** The --hosts options, or null without --hosts (then its companions are refused). */
+    private static CommandEvaluator.Hosts hosts(Map<String, String> o) {
+        if (!o.containsKey("hosts")) {
+            for (String k : List.of("retries", "ssh", "remote-dir"))
+                if (o.containsKey(k)) throw new IllegalArgumentException("--" + k + " needs --hosts");
+            return null;
+        }
+        CommandEvaluator.Hosts h = new CommandEvaluator.Hosts(Path.of(o.get("hosts")), o.get("ssh"), o.get("remote-dir"), integer(o, "retries", 3));
+        if (!ParallelHosts.available())
+            throw new IllegalArgumentException("--hosts needs GNU parallel (Debian package parallel; scripts/setup.sh installs it)");
+        return h;
+    }
 
     static Map<String, String> parse(String[] args) {
         Map<String, String> o = new LinkedHashMap<>();

@@ -16,6 +16,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import phalanx.match.ParallelHosts;
 
 /**
  * Evaluates candidates by running a shell command per candidate, up to {@code jobs} at a time (issue 21).
@@ -28,10 +29,12 @@ import java.util.regex.Pattern;
  * the log, so the search resumes from there.
  *
  * <p>With {@code viaParallel} the batch is handed to GNU parallel instead of threads ({@code parallel -j N
- * --joblog ... --timeout S}, as the tournament uses it; {@code {%}} - 1 is the slot): one job per candidate
- * running a small job script, each job's output in a file beside its candidate. The results are read when
- * the whole batch is done, so a kill in the middle of a batch loses that batch's finished evaluations (the
- * thread path logs each as it finishes). Local only here: no --sshloginfile yet.
+ * --joblog ... --timeout S}, as the tournament uses it; {@code {%}} - 1 is the slot): one job per candidate,
+ * scripts/lib/tools/search-job, each job's output in a file beside its candidate, read as soon as the joblog
+ * lists the job. With {@link Hosts} the jobs go to the hosts of an {@code --sshloginfile} through the
+ * tournament's ssh wrapper ({@link ParallelHosts}): the candidate's file is transferred, its output comes
+ * back (--return), a job that fails on a host is tried on another (--retries; each failed try is a line in
+ * WORK/failures.log with the host's name), and each host numbers its own slots 0..N-1 (search-job).
  */
 public final class CommandEvaluator implements CmaesSearch.Evaluator {
 
@@ -43,13 +46,31 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
     private final long timeoutSeconds;
     private final Path workDir;
     private final boolean viaParallel;
+    private final Hosts hosts;
     private int batches;
+
+    /**
+     * Other machines for the GNU parallel path: parallel's --sshloginfile {@code file}, the ssh command
+     * ({@code ssh}, null = ssh), the checkout on the hosts ({@code remoteDir}, null = this checkout's path;
+     * relative: from the home) and the tries per candidate.
+     */
+    public record Hosts(Path file, String ssh, String remoteDir, int retries) {
+        public Hosts {
+            if (retries < 1) throw new IllegalArgumentException("--retries must be at least 1, got " + retries);
+            ParallelHosts.checkHostsFile(file, "");
+        }
+    }
 
     public CommandEvaluator(String command, int jobs, long timeoutSeconds, Path workDir) {
         this(command, jobs, timeoutSeconds, workDir, false);
     }
 
     public CommandEvaluator(String command, int jobs, long timeoutSeconds, Path workDir, boolean viaParallel) {
+        this(command, jobs, timeoutSeconds, workDir, viaParallel, null);
+    }
+
+    /** {@code hosts} non-null: through GNU parallel on those hosts ({@code viaParallel} is then implied). */
+    public CommandEvaluator(String command, int jobs, long timeoutSeconds, Path workDir, boolean viaParallel, Hosts hosts) {
         if (command == null || command.isBlank()) throw new IllegalArgumentException("--eval needs a command");
         if (!command.contains("{params}")) throw new IllegalArgumentException("--eval command must contain {params} (the candidate's JSON file): " + command);
         if (jobs < 1) throw new IllegalArgumentException("--jobs must be at least 1, got " + jobs);
@@ -58,7 +79,8 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
         this.jobs = jobs;
         this.timeoutSeconds = timeoutSeconds;
         this.workDir = workDir;
-        this.viaParallel = viaParallel;
+        this.viaParallel = viaParallel || hosts != null;
+        this.hosts = hosts;
     }
 
     /** The score line of a command's output: {score, detail}, or null when there is none. */
@@ -145,52 +167,124 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
     }
 
     private void evaluateWithParallel(List<Map<String, Double>> batch, CmaesSearch.ResultSink done) throws IOException, InterruptedException {
-        Path dir = workDir.resolve("batch-" + (++batches));
+        // batch-K counts from 1 again in a resumed run (the logged generations are not evaluated): what a
+        // killed run left there is removed, so that no old output is read as this batch's
+        Path dir = workDir.resolve("batch-" + (++batches)).toAbsolutePath();
+        if (Files.isDirectory(dir)) {
+            try (var old = Files.walk(dir)) {
+                for (Path f : (Iterable<Path>) old.sorted(java.util.Comparator.reverseOrder())::iterator) if (!f.equals(dir)) Files.delete(f);
+            }
+        }
         Files.createDirectories(dir);
         List<String> files = new ArrayList<>();
         for (int i = 0; i < batch.size(); i++) {
-            Path f = dir.resolve("cand-" + i + ".json");
-            Files.writeString(f, JSON.writeValueAsString(batch.get(i)), StandardCharsets.UTF_8);
-            files.add(f.toAbsolutePath().toString());
+            Files.writeString(dir.resolve("cand-" + (i + 1) + ".json"), JSON.writeValueAsString(batch.get(i)), StandardCharsets.UTF_8);
+            files.add(dir + "/./cand-" + (i + 1) + ".json");   // "/./": on a host, the file goes to the job's folder
         }
-        Path job = dir.resolve("job.sh");
-        // $1 = the candidate's file, $2 = parallel's job slot (1-based)
-        Files.writeString(job, String.join("\n",
-                "SEARCH_SLOT=$(($2 - 1)); export SEARCH_SLOT",
-                "c=\"$1\"; b=\"${c%.json}\"",
-                "(", command.replace("{params}", "\"$c\""), ") > \"$b.out\" 2> \"$b.err\"",   // own lines: a '#' in it ends at the newline
-                "echo $? > \"$b.rc\"", ""), StandardCharsets.UTF_8);
-        List<String> cmd = new ArrayList<>(List.of("parallel", "-j", Integer.toString(jobs), "--joblog", dir.resolve("joblog").toString(),
-                "--timeout", Long.toString(timeoutSeconds), "--halt", "never", "sh", job.toString(), "{}", "{%}", ":::"));
+        Path joblog = dir.resolve("joblog"), failures = workDir.toAbsolutePath().resolve("failures.log");
+        Path root = ParallelHosts.checkout();
+        List<String> cmd = new ArrayList<>(List.of("parallel", "--joblog", joblog.toString(),
+                "--timeout", Long.toString(timeoutSeconds), "--halt", "never"));
+        String job;
+        if (hosts == null) {
+            cmd.addAll(List.of("-j", Integer.toString(jobs)));
+            job = "bash " + ParallelHosts.quote(root.resolve("scripts/lib/tools/search-job").toString()) + " {} {%}";
+        } else {
+            // a folder per job: --cleanup removes a job's folder when it is empty, and in a folder shared
+            // by a host's jobs that raced with the next job's transfer into it (found by the hosts test)
+            cmd.addAll(ParallelHosts.sshOptions(hosts.file(), jobs, root,
+                    "phalanx-searches/" + workDir.toAbsolutePath().getFileName() + "/" + dir.getFileName() + "/{#}", dir));
+            cmd.addAll(List.of("--env", "SEARCH_EVAL", "--transferfile", "{}", "--return", "{.}.out", "--return", "{.}.err", "--cleanup",
+                    "--retries", Integer.toString(hosts.retries())));
+            // exec: parallel's remote wrapper stops the job it started (ParallelTournament.template)
+            job = "exec bash " + ParallelHosts.tool(hosts.remoteDir() != null ? hosts.remoteDir() : root.toString(), "search-job") + " {} host";
+        }
+        cmd.add(job);
+        cmd.add(":::");
         cmd.addAll(files);
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("parallel.out").toFile());
+        // a ':' line of the hosts file runs its jobs here, in --workdir under parallel's folder: this batch's
+        if (hosts != null) pb.directory(dir.toFile());
+        pb.environment().put("SEARCH_EVAL", command);
+        if (hosts != null) ParallelHosts.environment(pb.environment(), failures, hosts.ssh(), "batch-" + batches + "/cand-%d");
+        long failuresBefore = Files.exists(failures) ? Files.readAllLines(failures).size() : 0;
         Process p;
         try {
-            p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("parallel.out").toFile()).start();
+            p = pb.start();
         } catch (IOException e) {
             throw new IOException("cannot run GNU parallel (Debian package 'parallel'): " + e.getMessage(), e);
         }
-        p.waitFor();
+        // a search stopped by SIGTERM (or Ctrl-C) stops parallel, which stops its jobs; the evaluations
+        // already read are in the search's log
+        Thread hook = new Thread(() -> {
+            p.destroy();
+            try { p.waitFor(60, TimeUnit.SECONDS); } catch (InterruptedException e) { Thread.currentThread().interrupt(); }
+        }, "cmaes-parallel-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        boolean[] read = new boolean[files.size()];
+        try {
+            // each result goes to the search (and its log) as soon as the joblog lists it, as on the thread path
+            while (!p.waitFor(200, TimeUnit.MILLISECONDS)) readFinished(dir, joblog, read, done);
+        } finally {
+            try { Runtime.getRuntime().removeShutdownHook(hook); } catch (IllegalStateException ignored) { }
+            if (p.isAlive()) p.destroy();
+        }
+        Map<Integer, String[]> finished = readFinished(dir, joblog, read, done);
+        if (Files.exists(failures)) {
+            List<String> lines = Files.readAllLines(failures);
+            for (String l : lines.subList((int) Math.min(failuresBefore, lines.size()), lines.size()))
+                System.err.println("cmaes: a failed try on a host (parallel tried it again elsewhere): " + l);
+        }
         for (int i = 0; i < files.size(); i++) {
-            String b = files.get(i).substring(0, files.get(i).length() - ".json".length());
-            Path rc = Path.of(b + ".rc");
-            String out = Files.exists(Path.of(b + ".out")) ? Files.readString(Path.of(b + ".out")) : "";
-            String err = Files.exists(Path.of(b + ".err")) ? Files.readString(Path.of(b + ".err")) : "";
-            if (!Files.exists(rc))
-                throw new IOException("GNU parallel job " + (i + 1) + " of batch " + batches + " did not finish (timed out after "
-                        + timeoutSeconds + " s, or parallel failed: " + dir.resolve("parallel.out") + ")\n" + tail(err + out));
-            String[] s = parseScore(out);
-            int status = Integer.parseInt(Files.readString(rc).strip());
-            if (status != 0 || s == null)
-                throw new IOException("evaluation " + (status != 0 ? "exited with status " + status : "printed no 'SCORE <number>' line")
-                        + ": " + command + " on " + files.get(i) + "\n" + tail(err + out));
+            if (read[i]) continue;
+            String b = dir.resolve("cand-" + (i + 1)).toString();
+            String output = tail(text(Path.of(b + ".err")) + text(Path.of(b + ".out")) + (hosts != null ? text(dir.resolve("parallel.out")) : ""));
+            String[] line = finished.get(i + 1);
+            String where = files.get(i) + (hosts != null ? " (tries that failed on a host: " + failures + ")" : "");
+            if (line == null)
+                throw new IOException("GNU parallel job " + (i + 1) + " of batch " + batches + " did not finish (parallel failed: "
+                        + dir.resolve("parallel.out") + ")\n" + output);
+            int status = Integer.parseInt(line[6].strip()), signal = Integer.parseInt(line[7].strip());
+            if (signal != 0)
+                throw new IOException("evaluation stopped by signal " + signal + " (a --timeout of " + timeoutSeconds + " s?): " + where + "\n" + output);
+            if (status != 0) throw new IOException("evaluation exited with status " + status + ": " + command + " on " + where + "\n" + output);
+            String[] sc = parseScore(text(Path.of(b + ".out")));
+            if (sc == null) throw new IOException("evaluation printed no 'SCORE <number>' line: " + command + " on " + where + "\n" + output);
+            throw new IOException("evaluation printed a SCORE that is not a finite number (" + sc[0] + "): " + where);
+        }
+    }
+
+    /**
+     * Passes every candidate the joblog lists as done (exit 0) whose output has its score to {@code done};
+     * returns every joblog line by sequence number (1-based). A line without its output yet (--return
+     * still copying) is read on a later call.
+     */
+    private static Map<Integer, String[]> readFinished(Path dir, Path joblog, boolean[] read, CmaesSearch.ResultSink done) throws IOException {
+        Map<Integer, String[]> lines = new java.util.HashMap<>();
+        if (!Files.exists(joblog)) return lines;
+        for (String l : Files.readAllLines(joblog)) {
+            String[] f = l.split("\t", 9);
+            if (f.length < 9 || !f[0].matches("\\d+")) continue;   // the header, or a line still being written
+            int seq = Integer.parseInt(f[0]);
+            lines.put(seq, f);
+            if (read[seq - 1] || !f[6].strip().equals("0") || !f[7].strip().equals("0")) continue;
+            String[] s = parseScore(text(dir.resolve("cand-" + seq + ".out")));
+            if (s == null) continue;
             double score;
             try {
                 score = Double.parseDouble(s[0]);
             } catch (NumberFormatException e) {
-                throw new IOException("evaluation printed a SCORE that is not a number (" + s[0] + "): " + files.get(i));
+                continue;   // reported as such after the batch
             }
-            done.accept(i, score, s[1]);
+            if (!Double.isFinite(score)) continue;
+            read[seq - 1] = true;
+            done.accept(seq - 1, score, s[1]);
         }
+        return lines;
+    }
+
+    private static String text(Path f) throws IOException {
+        return Files.exists(f) ? Files.readString(f, StandardCharsets.UTF_8) : "";
     }
 
     private static String tail(String s) {

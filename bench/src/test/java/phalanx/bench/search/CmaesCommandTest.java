@@ -3,7 +3,9 @@ package phalanx.bench.search;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -14,8 +16,10 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import phalanx.match.ParallelHosts;
 
 /**
  * The CMA-ES search through commands, as `kick-search cmaes` runs it, with no server: the kick generator's
@@ -96,6 +100,141 @@ class CmaesCommandTest {
         IOException e = assertThrows(IOException.class, () -> search(space, 9, 4, null)
                 .run(new CommandEvaluator("exit 5 # {params}", 2, 60, dir.resolve("w3"), true), null));
         assertTrue(e.getMessage().contains("exited with status 5"), e.getMessage());
+    }
+
+    /** The tournament's stand-in for ssh: runs the command here, in a home of the host's own (match/README.md). */
+    static final Path FAKE_SSH = Path.of("match/src/test/resources/tournament/fake-ssh").toAbsolutePath();
+
+    static void needParallelAndRsync() throws InterruptedException {
+        assumeTrue(ParallelHosts.available(), "GNU parallel is not installed (Debian package parallel): the search's --hosts path is not tested");
+        boolean rsync;
+        try {
+            Process p = new ProcessBuilder("rsync", "--version").redirectErrorStream(true).start();
+            p.getInputStream().readAllBytes();
+            rsync = p.waitFor(10, TimeUnit.SECONDS) && p.exitValue() == 0;
+        } catch (IOException e) {
+            rsync = false;
+        }
+        assumeTrue(rsync, "rsync is not installed: parallel's --transferfile and --return cannot be tested");
+    }
+
+    /**
+     * The fake evaluator as a host runs it: exit 3 ("no server") on the host $FAKE_EVAL_FAIL_ON, asleep
+     * $FAKE_EVAL_SLEEP s (so that a host's jobs overlap), then the fake score, its detail "slot=S host=H".
+     */
+    static Path hostEvaluator(Path dir) throws IOException {
+        Path f = dir.resolve("host-eval.sh");
+        Files.writeString(f, String.join("\n",
+                "h=\"${PARALLEL_SSHLOGIN:-:}\"",
+                "[ \"$h\" = \"${FAKE_EVAL_FAIL_ON:-}\" ] && { echo \"no server on $h\" >&2; exit 3; }",
+                "sleep \"${FAKE_EVAL_SLEEP:-0}\"",
+                "out=$(sh '" + fakeEvaluator(dir) + "' \"$1\") || exit $?",
+                "printf '%s\\n' \"$out\" | sed \"s/^SCORE .*/& host=$h/\"", ""));
+        return f;
+    }
+
+    /** x of every evaluation, with its score. */
+    static Map<String, Double> points(List<CmaesSearch.Eval> evals) {
+        Map<String, Double> m = new java.util.TreeMap<>();
+        for (CmaesSearch.Eval e : evals) assertNull(m.put(java.util.Arrays.toString(e.x()), e.score()), "evaluated twice: " + e);
+        return m;
+    }
+
+    @Test
+    void onHostsTheSearchIsTheThreadsOneAndACandidateThatFailsOnAHostIsRetriedAndRecorded(@TempDir Path dir) throws Exception {
+        needParallelAndRsync();
+        Path space = kickSpace(dir), homes = Files.createDirectories(dir.resolve("homes")), hostFile = dir.resolve("hosts.txt");
+        // h1 with two jobs; h2 answers but its evaluations fail (exit 3); "dead" does not answer (fake-ssh: 255)
+        Files.writeString(hostFile, "# stand-in hosts\n2/h1\n1/h2\n1/dead\n");
+        CmaesSearch threads = search(space, 9, 4, null);
+        CmaesSearch.Result r1 = threads.run(new CommandEvaluator("sh '" + fakeEvaluator(dir) + "' {params}", 2, 60, dir.resolve("w1")), null);
+        CmaesSearch onHosts = search(space, 9, 4, null);
+        Path work = dir.resolve("w2");
+        CommandEvaluator ev = new CommandEvaluator("FAKE_EVAL_FAIL_ON=h2 FAKE_EVAL_SLEEP=0.3 sh '" + hostEvaluator(dir) + "' {params}", 1, 60,
+                work, false, new CommandEvaluator.Hosts(hostFile, "env FAKE_SSH_HOMES=" + homes + " bash " + FAKE_SSH, null, 3));
+        CmaesSearch.Result r2 = onHosts.run(ev, null);
+
+        assertEquals(points(threads.evaluations()), points(onHosts.evaluations()));
+        assertArrayEquals(r1.best().x(), r2.best().x(), 0.0);
+        assertEquals(r1.best().score(), r2.best().score(), 0.0);
+        // every score came back from h1, in its own slots 0 and 1 (parallel's {%} runs to 4 over the three hosts)
+        for (CmaesSearch.Eval e : onHosts.evaluations()) assertTrue(e.detail().matches("slot=[01] host=h1"), e.detail());
+        assertTrue(onHosts.evaluations().stream().anyMatch(e -> e.detail().startsWith("slot=1")), "h1's second slot used");
+        // the tries on h2 and dead are recorded with the host's name, then each of those candidates ran on h1
+        List<String> failures = Files.readAllLines(work.resolve("failures.log"));
+        assertTrue(failures.stream().anyMatch(l -> l.matches(".* batch-\\d+/cand-\\d+ host=h2 exit=3 .*")), failures.toString());
+        assertTrue(failures.stream().anyMatch(l -> l.matches(".* batch-\\d+/cand-\\d+ host=dead exit=255 .*")), failures.toString());
+        // the candidates' files went to the hosts, and --cleanup removed them there
+        assertTrue(Files.readString(homes.resolve("calls.log")).contains("rsync"));
+        try (var s = Files.walk(homes.resolve("h1"))) {
+            assertTrue(s.noneMatch(f -> f.getFileName().toString().startsWith("cand-")), "a candidate's file left on h1");
+        }
+    }
+
+    @Test
+    void aSearchOnHostsKilledInTheMiddleResumesFromItsLog(@TempDir Path dir) throws Exception {
+        needParallelAndRsync();
+        Path space = kickSpace(dir), homes = Files.createDirectories(dir.resolve("homes")), hostFile = dir.resolve("hosts.txt");
+        Files.writeString(hostFile, "1/h1\n1/h2\n");
+        Path log = dir.resolve("s.jsonl"), out1 = dir.resolve("run1.out"), out2 = dir.resolve("run2.out");
+        List<String> args = List.of("--space", space.toString(), "--eval", "FAKE_EVAL_SLEEP=0.2 sh '" + hostEvaluator(dir) + "' {params}",
+                "--hosts", hostFile.toString(), "--ssh", "env FAKE_SSH_HOMES=" + homes + " bash " + FAKE_SSH, "--log", log.toString(),
+                "--generations", "4", "--seed", "4", "--work", dir.resolve("w").toString());
+        Process first = main(args, out1);
+        long until = System.nanoTime() + 120_000_000_000L;
+        while (Files.notExists(log) || Files.readAllLines(log).size() < 11) {   // the header, generation 1 (8) and two more
+            assertTrue(first.isAlive() && System.nanoTime() < until, "the search ended before it was stopped: " + Files.readString(out1));
+            Thread.sleep(100);
+        }
+        first.destroy();   // SIGTERM, as kill PID
+        assertTrue(first.waitFor(90, TimeUnit.SECONDS), "the stopped search did not end");
+        int logged = Files.readAllLines(log).size() - 1;
+        Process second = main(args, out2);
+        assertTrue(second.waitFor(180, TimeUnit.SECONDS), "the resumed search did not end");
+        String said = Files.readString(out2);
+        assertEquals(0, second.exitValue(), said);
+        assertTrue(said.contains("resuming from " + logged + " logged evaluations"), said);
+
+        CmaesSearch whole = search(space, 4, 4, null);
+        CmaesSearch.Result r = whole.run(new CommandEvaluator("sh '" + fakeEvaluator(dir) + "' {params}", 2, 60, dir.resolve("w2")), null);
+        CmaesSearch resumed = search(space, 4, 4, log);   // reads the log: every point once (points() checks)
+        assertEquals(points(whole.evaluations()), points(resumed.evaluations()));
+        assertTrue(said.contains(", " + (r.evaluated() - logged) + " evaluations run now"), said);
+        assertTrue(said.contains("BEST " + r.best().score() + " "), said);
+    }
+
+    /** CmaesMain in a JVM of its own (so that it can be killed), its output to {@code out}. */
+    static Process main(List<String> args, Path out) throws IOException {
+        List<String> cmd = new java.util.ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), "phalanx.bench.search.CmaesMain"));
+        cmd.addAll(args);
+        return new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(out.toFile()).start();
+    }
+
+    @Test
+    void badHostsOptionsAreRefusedWithStatus2(@TempDir Path dir) throws Exception {
+        Path space = kickSpace(dir), empty = dir.resolve("empty.txt"), hostFile = dir.resolve("hosts.txt");
+        Files.writeString(empty, "# no host yet\n\n");
+        Files.writeString(hostFile, "1/h1\n");
+        String sp = space.toString(), none = dir.resolve("none.txt").toString();
+        List<List<String>> cases = List.of(
+                List.of("--hosts", none), List.of("--hosts", empty.toString()), List.of("--ssh", "ssh -p 2222"),
+                List.of("--remote-dir", "phalanx"), List.of("--retries", "2"), List.of("--hosts", hostFile.toString(), "--retries", "0"),
+                List.of("--hosts"));
+        List<String> expect = List.of("--hosts " + none + " is not a file", "names no host", "--ssh needs --hosts",
+                "--remote-dir needs --hosts", "--retries needs --hosts", "--retries must be at least 1", "--hosts needs a value");
+        for (int i = 0; i < cases.size(); i++) {
+            List<String> a = new java.util.ArrayList<>(List.of("--space", sp, "--eval", "x {params}"));
+            a.addAll(cases.get(i));
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> CmaesMain.run(a.toArray(String[]::new)), a.toString());
+            assertTrue(e.getMessage().contains(expect.get(i)), "'" + e.getMessage() + "' should say " + expect.get(i));
+        }
+        // the command line's status and message
+        Path out = dir.resolve("main.out");
+        Process p = main(List.of("--space", sp, "--eval", "x {params}", "--hosts", empty.toString()), out);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(2, p.exitValue(), Files.readString(out));
+        assertTrue(Files.readString(out).startsWith("cmaes: --hosts " + empty + " names no host"), Files.readString(out));
     }
 
     @Test
