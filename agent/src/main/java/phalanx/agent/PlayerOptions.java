@@ -33,8 +33,8 @@ public record PlayerOptions(String host, int port, String team, int unum, int pl
                              is a foul) or tap (player 10 taps the ball and player 9 plays it; AgentConfig.KickOff.TAP)
               --stand-before MS  before a kick, once the walk has stopped, stand MS milliseconds (0-2000;
                              default MotionConfig.standBeforeSeconds)
-              --stand-after MS   after a kick, get-up or dive, stand MS milliseconds in the walk's crouch before
-                             stepping (0-2000; default MotionConfig.standAfterSeconds)
+              --stand-after MS   after a kick, get-up or dive, stand MS milliseconds, easing into the walk's crouch,
+                             before stepping (0-2000; default MotionConfig.standAfterSeconds)
               --server S     simspark (default: rcssserver3d, a Nao) or mj (rcssservermj, a Booster T1; 7 players,
                              --unum 1-7; docs/rcssservermj.md)""";
 

@@ -22,14 +22,16 @@ package phalanx.motion;
  *                            walk, once stopped, stands this long in its crouch so the body is still when it starts;
  *                            0 kicks at once. 0.5 s: on the approach bench 16 of 30 first touches went over 8 m,
  *                            against 9 of 30 kicking at once (docs/matches.md, session 19)
- * @param standAfterSeconds   ours: after a keyframe motion the walk stands this long in its crouch before it steps;
- *                            0 steps at once (docs/matches.md, session 19)
+ * @param standAfterSeconds   ours: after a keyframe motion the walk stands this long before it steps, easing the
+ *                            joints from where the motion left them into its own crouch (WalkController.startFrom);
+ *                            0 snaps them there and steps at once. 0.4 s: on the approach bench 3 falls in 30 trials
+ *                            against 7 with 0 (docs/matches.md, session 20)
  */
 public record MotionConfig(double cycleSeconds, double maxJointSpeed, int latencyCycles,
                            int textPoseCycles, int textPoseStep, double walkSlowdownFactor,
                            double turnGainMin, double turnGainMax, double walkLeanDeg, double standBeforeSeconds, double standAfterSeconds) {
 
-    public static final MotionConfig DEFAULT = new MotionConfig(0.02, 6.1395, 1, 2, 1, 1.35, 0.3, 1.0, 8.0, 0.5, 0.0);
+    public static final MotionConfig DEFAULT = new MotionConfig(0.02, 6.1395, 1, 2, 1, 1.35, 0.3, 1.0, 8.0, 0.5, 0.4);
 
     public MotionConfig {
         positive(cycleSeconds, "cycleSeconds");
