@@ -163,7 +163,10 @@ public final class Goalkeeper implements Action {
         Vector2 to = insideOwnArea(s.field(), ball.plus(u.times(config.keeper().challengePush())));
         if (toBall == null) toBall = new WalkToCoordinate(config, to.x(), to.y(), u.angleDeg());
         else toBall.target(to.x(), to.y(), u.angleDeg());
-        return Decision.of(toBall.decide(s).move(), track.head(s));
+        Decision walk = toBall.decide(s);
+        // Without a self pose the walk turns to localize, and its head must pan for landmarks, not track the ball:
+        // in session 20's g1 the keeper challenged 17.5 s with no self pose, the ball 1.3 m away, and the goal came from there.
+        return Facts.self(s, config) == null ? walk : Decision.of(walk.move(), track.head(s));
     }
 
     /** How far inside its penalty area's edges the keeper's Challenge stops. */

@@ -185,6 +185,22 @@ class GoalkeeperTest {
     }
 
     @Test
+    void challengeWithoutASelfPoseTurnsToLocalizeWithTheHeadPanningNotTrackingTheBall() {
+        Goalkeeper k = guarding();
+        k.decide(World.at(-14.5, 0.1, 0).ballAt(-13.5, 0.2).situation());
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        World lost = World.at(-14.5, 0.1, 0).ballAt(-13.5, 0.2);
+        lost.selfAge = 60;    // the self pose long stale, the ball still believed where it lies
+        phalanx.agent.decide.Decision d = k.decide(lost.situation());
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        phalanx.agent.decide.Decision localize = new phalanx.agent.action.TurnToLocalize(C).decide(lost.situation());
+        assertEquals(localize.move(), d.move(), "turns to localize");
+        assertEquals(localize.head(), d.head(), "the head pans as Turn To Localize's does");
+        phalanx.agent.decide.Decision seen = k.decide(World.at(-14.5, 0.1, 0).ballAt(-13.5, 0.2).situation());
+        assertNotEquals(localize.head(), seen.head(), "with a pose again the head tracks the ball");
+    }
+
+    @Test
     void challengeStopsAtThePenaltyAreasEdge() {
         // Ball at (-12.4, 0), 2.6 m out: in the Challenge box but outside the 1.8 m penalty area, where the server's
         // charging rule no longer spares a goalie. The keeper walks out to the area's edge (x = -13.35) and stops there.
