@@ -275,6 +275,17 @@ class ParallelTournamentTest {
         assertEquals(once(8), ledger(ledger, "done"), "each game played to its end exactly once: " + Files.readString(ledger));
         assertTrue(text.contains("Games (8 in " + out + ")"), text);
         for (int i = 1; i <= 8; i++) assertTrue(MatchResult.read(out.resolve(Tournament.tag(i) + ".json")).completed());
+        if (!onHosts) {
+            // A replayed game played in an empty folder; the stopped try's folder (no monitor log) stays beside it.
+            for (String tag : killed.keySet()) {
+                List<Path> dirs;
+                try (var l = Files.list(out)) { dirs = l.filter(d -> d.getFileName().toString().startsWith(tag + "-")).sorted().toList(); }
+                assertEquals(2, dirs.size(), dirs.toString());
+                assertTrue(dirs.get(1).getFileName().toString().endsWith(".try-1"), dirs.toString());
+                assertTrue(Files.exists(dirs.get(0).resolve("monitor.log.gz")), "the replay's folder has its game: " + dirs.get(0));
+                assertFalse(Files.exists(dirs.get(1).resolve("monitor.log.gz")), "the stopped try's folder is its own: " + dirs.get(1));
+            }
+        }
     }
 
     @Test
