@@ -104,11 +104,14 @@ public final class WalkSearch {
 
         /**
          * One WalkTrial --score with the candidate as --set pairs: its JSON file ({"f":v,...}, as
-         * CommandEvaluator writes it) turned into f=v,... by tr. `java` from PATH, as run-java does.
+         * CommandEvaluator writes it) turned into f=v,... by tr. `java` from PATH, as run-java does. The
+         * classpath is the one gradle wrote in the checkout the job runs in (on another host, its own checkout,
+         * wherever --remote-dir put it), else this search's own.
          */
         String evalCommand() {
             String slot = "${SEARCH_SLOT:-0}";
-            return String.join(" ", "java", "-cp", quote(System.getProperty("java.class.path")), WalkTrial.class.getName(), "--score",
+            String cp = "\"$(cat bench/build/runtime-classpath.txt 2>/dev/null || echo " + quote(System.getProperty("java.class.path")) + ")\"";
+            return String.join(" ", "java", "-cp", cp, WalkTrial.class.getName(), "--score",
                     "--type", Integer.toString(type), "--host", quote(trial.host()),
                     "--port", "$((" + trial.port() + " + " + slot + "))", "--monitor-port", "$((" + trial.monitorPort() + " + " + slot + "))",
                     "--search-seconds", Double.toString(trial.searchSeconds()),
