@@ -232,17 +232,23 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param challengePush     it walks to the point this far past the ball on the line from the goal's centre,
      *                          so it meets the ball from the goal's side and pushes it away (no kick: ours end on
      *                          the ground, see libero), m
+     * @param challengeOutside  a ball lying up to this far outside our penalty area is still challenged: the keeper
+     *                          leaves the area for it, walking under the referee's charging speed there, since outside
+     *                          the area the charging rule no longer spares it (ours, issue 18: in session 20 UT Austin
+     *                          Villa scored twice from a ball lying 0.1-0.2 m outside the area while the keeper, stopped
+     *                          at the edge, stood 0.5-0.7 m from it; docs/matches.md). 0: the keeper stays inside
      */
     public record Keeper(double spotOffset, double diveSeconds, double postMargin, double bodyBlock, double ballDecay,
                          double minApproachSpeed, double relocalizeDistance, double liberoClearance,
                          double liberoExitMargin, double liberoMaxSpeed, double shotSpeed, double dribbleDistance,
                          double minDiveDistance, double maxShift, double shiftTolerance, boolean libero,
-                         double challengeDepth, double challengeWidth, double challengeExit, double challengePush) {
+                         double challengeDepth, double challengeWidth, double challengeExit, double challengePush,
+                         double challengeOutside) {
         public static final Keeper DEFAULT = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
-                1.0, 0.6, 0.5, 0.5, 0.15, false, 3.0, 2.5, 0.7, 0.3);
+                1.0, 0.6, 0.5, 0.5, 0.15, false, 3.0, 2.5, 0.7, 0.3, 0.7);
         /** The thesis's keeper: Libero on, the middle of the goal, a dive for any approaching ball, no challenge. */
         public static final Keeper THESIS = new Keeper(0.5, 0.7, 0.15, 0.14, 1.06, 0.2, 0.7, 1.0, 0.5, 1.0,
-                0.2, 0.6, 0.0, 0.0, 0.15, true, 0.0, 2.5, 0.7, 0.3);
+                0.2, 0.6, 0.0, 0.0, 0.15, true, 0.0, 2.5, 0.7, 0.3, 0.0);
     }
 
     /**

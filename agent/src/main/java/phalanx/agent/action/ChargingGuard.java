@@ -50,6 +50,14 @@ public final class ChargingGuard {
         return m;
     }
 
+    /**
+     * The move at most at the share of the walk's limits that keeps the torso under the referee's charging speed, whoever
+     * is near: for a goalkeeper outside its area, which the rule no longer spares (Goalkeeper's Challenge).
+     */
+    public static Move belowChargingSpeed(Move m, AgentConfig.Charging c) {
+        return way(m, c.speedShare()) == null ? m : slowed(m, c.speedShare());
+    }
+
     /** Near the ball, heading for it more than at him and nearer to it than he is: the rule calls him, not us. */
     private static boolean hisFoul(Vector2 ball, Vector2 him, Vector2 way, AgentConfig.Charging c) {
         double ours = ball.norm(), his = ball.distanceTo(him);

@@ -1,6 +1,7 @@
 package phalanx.agent.goalkeeper;
 
 import phalanx.agent.AgentConfig;
+import phalanx.agent.action.ChargingGuard;
 import phalanx.agent.action.Facts;
 import phalanx.agent.action.OnBall;
 import phalanx.agent.action.TrackMovingObject;
@@ -160,25 +161,36 @@ public final class Goalkeeper implements Action {
         Vector2 out = ball.minus(new Vector2(-s.field().halfLength(), 0));
         double n = out.norm();
         Vector2 u = n < 1e-6 ? new Vector2(1, 0) : out.times(1 / n);
-        Vector2 to = insideOwnArea(s.field(), ball.plus(u.times(config.keeper().challengePush())));
+        Vector2 past = ball.plus(u.times(config.keeper().challengePush()));
+        double outside = config.keeper().challengeOutside();
+        // A ball just outside the area is gone for (walking slowly out there, below); farther out the keeper stops inside.
+        boolean goesOut = outside > 0 && inGoalArea(s.field(), ball, outside) && !inGoalArea(s.field(), past, -AREA_MARGIN);
+        Vector2 to = clampToOwnArea(s.field(), past, goesOut ? outside + AREA_MARGIN : -AREA_MARGIN);
         if (toBall == null) toBall = new WalkToCoordinate(config, to.x(), to.y(), u.angleDeg());
         else toBall.target(to.x(), to.y(), u.angleDeg());
         Decision walk = toBall.decide(s);
         // Without a self pose the walk turns to localize, and its head must pan for landmarks, not track the ball:
         // in session 20's g1 the keeper challenged 17.5 s with no self pose, the ball 1.3 m away, and the goal came from there.
-        return Facts.self(s, config) == null ? walk : Decision.of(walk.move(), track.head(s));
+        Pose2 self = Facts.self(s, config);
+        if (self == null) return walk;
+        // Going out, it is under the charging speed before it leaves the area (the walk needs ~0.4 m to slow down).
+        boolean slow = goesOut && !inGoalArea(s.field(), self.position(), -SLOW_BEFORE_EDGE);
+        return Decision.of(slow ? ChargingGuard.belowChargingSpeed(walk.move(), config.charging()) : walk.move(), track.head(s));
     }
 
     /** How far inside its penalty area's edges the keeper's Challenge stops. */
     private static final double AREA_MARGIN = 0.15;
+    /** Going out of the area, the keeper walks under the charging speed from this far inside its edge on, m. */
+    private static final double SLOW_BEFORE_EDGE = 0.4;
 
     /**
-     * The point moved inside our penalty area by AREA_MARGIN. The server's charging rule spares a goalie only inside
-     * its own penalty area (SimSpark soccerruleaspect.cpp, AnalyseChargingFouls): in g20b the keeper met an opponent at
-     * the ball 2.7 m out, was taken off to the touch line (377 s) and the goal fell while it walked back.
+     * The point moved inside our penalty area grown by a margin (negative: AREA_MARGIN inside it). The server's charging
+     * rule spares a goalie only inside its own penalty area (SimSpark soccerruleaspect.cpp, AnalyseChargingFouls): in
+     * g20b the keeper met an opponent at the ball 2.7 m out, was taken off to the touch line (377 s) and the goal fell
+     * while it walked back.
      */
-    private static Vector2 insideOwnArea(FieldSpec f, Vector2 p) {
-        double maxX = -f.halfLength() + f.penaltyDepth() - AREA_MARGIN, maxY = f.penaltyWidth() / 2 - AREA_MARGIN;
+    private static Vector2 clampToOwnArea(FieldSpec f, Vector2 p, double margin) {
+        double maxX = -f.halfLength() + f.penaltyDepth() + margin, maxY = f.penaltyWidth() / 2 + margin;
         return new Vector2(Math.min(p.x(), maxX), Math.max(-maxY, Math.min(maxY, p.y())));
     }
 

@@ -214,6 +214,36 @@ class GoalkeeperTest {
     }
 
     @Test
+    void challengeLeavesTheAreaSlowlyForABallLyingJustOutsideIt() {
+        // Session 20's g3: the ball lay still at (-13.06, 0.05), 0.14 m outside the area's edge (x = -13.2), and the
+        // keeper stood at (-13.55, -0.12), stopped by the edge, until UT Austin Villa shot past it. Now it goes on
+        // through the ball, under the charging speed once within 0.4 m of the edge.
+        Goalkeeper k = guarding();
+        k.decide(World.at(-14.5, 0, 0).ballAt(-13.06, 0.05).situation());
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        Move fast = k.decide(World.at(-14.3, 0, 0).ballAt(-13.06, 0.05).situation()).move();
+        assertEquals(new Move.Walk(0, false).getClass(), fast.getClass(), fast.toString());
+        assertFalse(((Move.Walk) fast).slow(), "deep in the area it walks at full speed: " + fast);
+        Move atEdge = k.decide(World.at(-13.55, -0.12, 10).ballAt(-13.06, 0.05).situation()).move();
+        assertTrue(atEdge instanceof Move.Walk w && w.slow() || atEdge instanceof Move.Omni o && o.forward() <= C.charging().speedShare(),
+                "walks on slowly: " + atEdge);
+        Move pastEdge = k.decide(World.at(-13.35, 0.05, 0).ballAt(-13.06, 0.05).situation()).move();
+        assertTrue(pastEdge instanceof Move.Walk w && w.slow(), "walks on out of the area, slowly: " + pastEdge);
+        // The keeper that stays inside (challengeOutside 0) stops at the edge as before.
+        Goalkeeper in = guarding(C.withKeeper(withOutside(C.keeper(), 0)));
+        in.decide(World.at(-14.5, 0, 0).ballAt(-13.06, 0.05).situation());
+        Move stays = in.decide(World.at(-13.35, 0.05, 0).ballAt(-13.06, 0.05).situation()).move();
+        assertFalse(stays instanceof Move.Walk || stays instanceof Move.Omni, "walked out of the area: " + stays);
+    }
+
+    private static AgentConfig.Keeper withOutside(AgentConfig.Keeper k, double outside) {
+        return new AgentConfig.Keeper(k.spotOffset(), k.diveSeconds(), k.postMargin(), k.bodyBlock(), k.ballDecay(), k.minApproachSpeed(),
+                k.relocalizeDistance(), k.liberoClearance(), k.liberoExitMargin(), k.liberoMaxSpeed(), k.shotSpeed(), k.dribbleDistance(),
+                k.minDiveDistance(), k.maxShift(), k.shiftTolerance(), k.libero(), k.challengeDepth(), k.challengeWidth(), k.challengeExit(),
+                k.challengePush(), outside);
+    }
+
+    @Test
     void behaviourStandsUpWhenDownButNeverInterruptsADive() {
         GoalkeeperBehaviour b = new GoalkeeperBehaviour(C);
         b.decide(World.at(-14.5, 0, 0).ballAt(0, 0).situation());
