@@ -17,9 +17,11 @@ import phalanx.model.robot.NaoModel;
  * @param approach   On Ball's way to the ball (ours)
  * @param kickOff    our kick-off: a tap and a partner (ours)
  * @param charging   walking slowly into opponents, so the referee does not call us for charging (the server's rule)
+ * @param setPieces  keeping out of what the referee clears at the opponents' set pieces (the server's rule)
  */
 public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obstacles obstacles,
-                          Keeper keeper, Fallback fallback, Approach approach, KickOff kickOff, Charging charging) {
+                          Keeper keeper, Fallback fallback, Approach approach, KickOff kickOff, Charging charging,
+                          SetPieces setPieces) {
 
     /**
      * @param panAmplitudeDeg  Pan Head / Scan yaw swing each side (ours: ±90° with the 120° field of
@@ -309,32 +311,51 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         public static final Charging OFF = new Charging(false, 1.0, 60, 0.4, 1.0, 0.1, 0.3);
     }
 
+    /**
+     * The referee's clearing at the opponents' kick-off and set pieces (SoccerRuleAspect::ClearPlayers, naosoccersim.rb:
+     * FreeKickDistance 2 m, FreeKickMoveDist 2.5 m; docs/protocol.md "Their set pieces"). Not in the thesis; ours.
+     *
+     * @param enabled    keep out at all (TheirSetPiece)
+     * @param keepOut    stay this far from the ball: the server moves a robot whose box meets the 2 m sphere, and the box
+     *                   reaches ~0.2 m out from the torso, m
+     * @param tolerance  a place this much inside keepOut still counts as out (so a player at the line does not dither), m
+     * @param halfMargin at their kick-off stay this far on our side of the half-way line (the half is cleared too), and
+     *                   at their goal kick this far out of their penalty area, m
+     */
+    public record SetPieces(boolean enabled, double keepOut, double tolerance, double halfMargin) {
+        public static final SetPieces DEFAULT = new SetPieces(true, 2.6, 0.2, 0.3);
+        public static final SetPieces OFF = new SetPieces(false, 2.6, 0.2, 0.3);
+    }
+
     public static final AgentConfig DEFAULT = new AgentConfig(Head.DEFAULT, Beliefs.DEFAULT, Walk.DEFAULT,
-            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT, Charging.DEFAULT);
+            Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT, Charging.DEFAULT,
+            SetPieces.DEFAULT);
 
     public AgentConfig {
         if (head == null || beliefs == null || walk == null || kick == null || obstacles == null
-                || keeper == null || fallback == null || approach == null || kickOff == null || charging == null) {
+                || keeper == null || fallback == null || approach == null || kickOff == null || charging == null || setPieces == null) {
             throw new IllegalArgumentException("every part of the agent config is required");
         }
     }
 
-    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach, kickOff, charging); }
+    public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach, kickOff, charging, setPieces); }
 
-    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach, kickOff, charging); }
+    public AgentConfig withKeeper(Keeper k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, k, fallback, approach, kickOff, charging, setPieces); }
 
-    public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a, kickOff, charging); }
+    public AgentConfig withApproach(Approach a) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, a, kickOff, charging, setPieces); }
 
-    public AgentConfig withFallback(Fallback f) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, f, approach, kickOff, charging); }
+    public AgentConfig withFallback(Fallback f) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, f, approach, kickOff, charging, setPieces); }
 
-    public AgentConfig withCharging(Charging c) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, kickOff, c); }
+    public AgentConfig withCharging(Charging c) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, kickOff, c, setPieces); }
 
-    public AgentConfig withKickOff(KickOff k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, k, charging); }
+    public AgentConfig withSetPieces(SetPieces p) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, kickOff, charging, p); }
+
+    public AgentConfig withKickOff(KickOff k) { return new AgentConfig(head, beliefs, walk, kick, obstacles, keeper, fallback, approach, k, charging, setPieces); }
 
     /** The defaults with the leg geometry of this robot type (the camera height for Track Object) and its kicks. */
     public static AgentConfig forRobotType(int type) {
         Head h = new Head(Head.DEFAULT.panAmplitudeDeg(), Head.DEFAULT.panPeriodSeconds(), Head.DEFAULT.scanPitchDownDeg(),
                 NaoModel.ofType(type), Head.DEFAULT.leadSeconds());
-        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT, Charging.DEFAULT);
+        return new AgentConfig(h, Beliefs.DEFAULT, Walk.DEFAULT, type == 4 ? Kick.TYPE_4 : Kick.DEFAULT, Obstacles.DEFAULT, Keeper.DEFAULT, Fallback.DEFAULT, Approach.DEFAULT, KickOff.DEFAULT, Charging.DEFAULT, SetPieces.DEFAULT);
     }
 }

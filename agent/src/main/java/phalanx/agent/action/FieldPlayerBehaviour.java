@@ -42,6 +42,7 @@ public final class FieldPlayerBehaviour {
     private final StandUp standUp;
     private final KickOffPlay kickOff;
     private final ChargingGuard guard;
+    private final TheirSetPiece theirSetPiece;
     private phalanx.comm.team.Action order;
     private ActionId runningId;
     private boolean runningOwn;
@@ -59,6 +60,7 @@ public final class FieldPlayerBehaviour {
         this.standUp = new StandUp(config);
         this.kickOff = new KickOffPlay(config, unum);
         this.guard = new ChargingGuard(config);
+        this.theirSetPiece = new TheirSetPiece(config);
     }
 
     /** The coordinator's last order to this player (null: none). */
@@ -89,8 +91,9 @@ public final class FieldPlayerBehaviour {
             running = ownChoice(s, home);
             runningOwn = true;
         }
-        Decision d = guard.apply(s, running.decide(s));
-        logPhase(s);
+        Action act = theirSetPiece.adjust(s, running);
+        Decision d = guard.apply(s, act.decide(s));
+        logPhase(s, act != running);
         return d;
     }
 
@@ -98,8 +101,8 @@ public final class FieldPlayerBehaviour {
      * One log line when the action (or On Ball's state) changes, with who chose it: what a match review
      * needs to see why a player near the ball did not kick it. Nothing is built in an ordinary cycle.
      */
-    private void logPhase(Situation s) {
-        Object phase = running instanceof OnBall o ? o.state() : null;
+    private void logPhase(Situation s, boolean keptOut) {
+        Object phase = keptOut ? "KEPT_OUT" : running instanceof OnBall o ? o.state() : null;
         if (running == lastAction && phase == lastPhase && runningOwn != lastOrdered) return;
         lastAction = running;
         lastPhase = phase;
