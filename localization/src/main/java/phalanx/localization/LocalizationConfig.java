@@ -63,6 +63,14 @@ package phalanx.localization;
  * @param fallStuckCycles      cycles of uninterrupted tilt after which the fall counts as confirmed even with the feet
  *                             carrying weight (kneeling, sitting, tangled with another robot): otherwise a robot stuck
  *                             half down stayed FALLING, which only stands and waits; not in the thesis (ours: 1 s)
+ * @param ballMissFrames       steady vision frames in a row in which the believed ball lay inside the camera's view
+ *                             (ballMissViewDeg) and no ball was seen, after which the ball belief is dropped: the
+ *                             server's restricted vision has no occlusion, so a ball in the view cone is always
+ *                             reported. In session 21's g1 a player kept a kicked ball "at its feet" for 6 s while it
+ *                             lay 5 m ahead of it, 3 m from the opponents' goal (docs/matches.md). 0: off; not in the thesis
+ * @param ballMissViewDeg      half-angle of the view cone (horizontal and vertical, from the camera's axis) inside which
+ *                             a ball must be seen: the server's is 60° (120° x 120°, docs/protocol.md), less a margin
+ *                             for the head's motion within a cycle and the torso tilt's error; not in the thesis
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
                                  double ballAgreementMetres, PairWeighting pairWeighting, double fieldMarginMetres,
@@ -74,7 +82,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
                                  int fallConfirmCycles, double fallBackMinDeg, double accSmoothing, int fallTiltCycles,
-                                 int fallStuckCycles) {
+                                 int fallStuckCycles, int ballMissFrames, double ballMissViewDeg) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -94,7 +102,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             0.1, 0.02,
             5, 5,
             1.0, 3,
-            50, 150, 20, 5, 30, 0.05, 3, 50);
+            50, 150, 20, 5, 30, 0.05, 3, 50,
+            3, 50);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -105,6 +114,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         if (!(fusionClusterMetres > 0)) throw new IllegalArgumentException("fusionClusterMetres must be positive");
         if (!(accSmoothing > 0 && accSmoothing <= 1)) throw new IllegalArgumentException("accSmoothing must be in (0, 1]");
         if (!(fallBackMinDeg >= 0 && fallBackMinDeg < 90)) throw new IllegalArgumentException("fallBackMinDeg must be in [0, 90), got " + fallBackMinDeg);
+        if (ballMissFrames < 0 || !(ballMissViewDeg > 0 && ballMissViewDeg < 90)) throw new IllegalArgumentException("ballMissFrames must be >= 0 and ballMissViewDeg in (0, 90)");
         if (relocateFrames < 1 || fallConfirmCycles < 1 || fallTiltCycles < 1 || fallStuckCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
     }
 
@@ -113,7 +123,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                ballMissFrames, ballMissViewDeg);
     }
 
     /** The same with other relocation constants (k frames, far metres and degrees, spread metres and degrees). */
@@ -122,7 +133,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, frames, metres,
                 deg, spreadMetres, spreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                ballMissFrames, ballMissViewDeg);
     }
 
     /**
@@ -134,7 +146,18 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, metres, share, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                ballMissFrames, ballMissViewDeg);
+    }
+
+    /** The same with another ball-miss rule (frames in a row, 0 = off; view half-angle in degrees). */
+    public LocalizationConfig withBallMiss(int frames, double viewDeg) {
+        return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                frames, viewDeg);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
@@ -142,6 +165,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 w, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
-                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles);
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                ballMissFrames, ballMissViewDeg);
     }
 }

@@ -493,18 +493,18 @@ public final class LocalizeEval {
     private static String num1(double v) { return String.format(Locale.ROOT, "%.1f", v); }
 
     private static void detail(PrintStream out, Result r) {
-        long noVision = 0, none = 0, one = 0, bad = 0, noId = 0, fallenFrames = 0, starts = 0;
+        long noVision = 0, none = 0, one = 0, bad = 0, noId = 0, fallenFrames = 0, starts = 0, missed = 0;
         for (BeliefStats s : r.stats) {
             noVision += s.noVision(); none += s.noLandmark(); one += s.oneLandmark(); bad += s.badPolar();
-            noId += s.playerWithoutId(); fallenFrames += s.fallenFrames(); starts += s.selfStarts();
+            noId += s.playerWithoutId(); fallenFrames += s.fallenFrames(); starts += s.selfStarts(); missed += s.ballsMissed();
         }
         out.printf(Locale.ROOT, "%-10s skipped: no_vision=%d no_landmark=%d one_landmark=%d bad_distance=%d"
                         + " player_without_id=%d malformed=%d | fallen: %d cycles (torso > 45 deg), %d vision frames skipped (falling, down or shaken),"
                         + " self error while down median %.3f m (%d cycles, not in the figures above) | ball over every cycle with a belief: median %.3f p95 %.3f m (%d cycles)"
-                        + " | self filter starts %d (the first and every re-initialisation)%n",
+                        + " | self filter starts %d (the first and every re-initialisation) | ball dropped %d times (not seen in view)%n",
                 r.name, noVision, none, one, bad, noId, r.malformed, r.fallenCycles, fallenFrames,
                 quantile(r.fallenSelf, 0.5), r.fallenSelf.size(), quantile(r.ballAll, 0.5), quantile(r.ballAll, 0.95), r.ballAll.size(),
-                starts);
+                starts, missed);
     }
 
     private static void summary(PrintStream out, Result r) {

@@ -6,7 +6,7 @@ package phalanx.localization.belief;
  */
 public final class BeliefStats {
     long cycles, visionFrames, selfFixes, selfUpdates, noVision, noLandmark, oneLandmark, badPolar,
-            playerWithoutId, fallenFrames, noSide, selfStarts;
+            playerWithoutId, fallenFrames, noSide, selfStarts, ballsMissed;
 
     public long cycles() { return cycles; }
     /** Cycles that carried a See. */
@@ -20,6 +20,8 @@ public final class BeliefStats {
      * a move, a FIFO queue emptied by refusals, a start after {@code forgetPose}); each drops the ball.
      */
     public long selfStarts() { return selfStarts; }
+    /** Times the ball belief was dropped because the ball was not seen where it was believed, in view (LocalizationConfig.ballMissFrames). */
+    public long ballsMissed() { return ballsMissed; }
     public long noVision() { return noVision; }
     public long noLandmark() { return noLandmark; }
     public long oneLandmark() { return oneLandmark; }
@@ -38,6 +40,6 @@ public final class BeliefStats {
         return "cycles=" + cycles + " vision=" + visionFrames + " fixes=" + selfFixes + " updates=" + selfUpdates
                 + " no_vision=" + noVision + " no_landmark=" + noLandmark + " one_landmark=" + oneLandmark
                 + " bad_polar=" + badPolar + " player_without_id=" + playerWithoutId
-                + " fallen_frames=" + fallenFrames + " no_side=" + noSide + " self_starts=" + selfStarts;
+                + " fallen_frames=" + fallenFrames + " no_side=" + noSide + " self_starts=" + selfStarts + " balls_missed=" + ballsMissed;
     }
 }

@@ -43,6 +43,8 @@ public final class BeliefStore {
     private static final double STEADY_TOLERANCE = 3.0;
     /** Seconds per server cycle, for the first gyro step. */
     private static final double CYCLE = 0.02;
+    /** The ball's centre above the ground, m (its radius). */
+    private static final double BALL_CENTRE_HEIGHT = 0.042;
 
     private final FieldSpec field;
     private final LocalizationConfig config;
@@ -66,6 +68,8 @@ public final class BeliefStore {
     private double odoForward, odoLeft, odoTurn;
     /** The self filter has had a belief since this store was made: a further start is a re-initialisation. */
     private boolean selfStarted;
+    /** Steady vision frames in a row with the believed ball in view and no ball seen. */
+    private int ballMisses;
     private Vector2 ballRelative;
     private List<PlayerBelief> mateList = List.of(), otherList = List.of();
     private WorldBelief belief;
@@ -119,6 +123,7 @@ public final class BeliefStore {
      * (taken before the move) are dropped; the next sighting is accepted wherever it is.
      */
     private void dropBall() {
+        ballMisses = 0;
         ballFilter.clear();
         ballTracker.clear();
         ballRelative = null;
@@ -219,7 +224,12 @@ public final class BeliefStore {
         Pose2 self = selfFilter.pose();
 
         Polar ball = v.ball();
+        if (ball == null && missed(camera, self, steady)) {
+            stats.ballsMissed++;
+            dropBall();
+        }
         if (ball != null) {
+            ballMisses = 0;
             if (!ball.isUsable()) stats.badPolar++;
             else {
                 ballRelative = camera.toGround(ball);
@@ -240,6 +250,21 @@ public final class BeliefStore {
             mateList = collect(mates);
             otherList = collect(others);
         }
+    }
+
+    /**
+     * This frame saw no ball although the believed ball lies in the camera's view: the server reports every object in
+     * its view cone (no occlusion), so after ballMissFrames such frames in a row the ball is not there (kicked past,
+     * taken away) and the belief goes, instead of being looked at until it ages out (docs/matches.md, session 21).
+     */
+    private boolean missed(CameraPose camera, Pose2 self, boolean steady) {
+        int frames = config.ballMissFrames();
+        Vector2 ball = self == null ? null : ballFilter.position();
+        if (frames <= 0 || !steady || ball == null) return false;
+        if (!camera.inView(self.toRelative(ball), BALL_CENTRE_HEIGHT, config.ballMissViewDeg())) return false;
+        if (++ballMisses < frames) return false;
+        ballMisses = 0;
+        return true;
     }
 
     private boolean seePlayer(SeenPlayer sp, CameraPose camera, Pose2 self) {

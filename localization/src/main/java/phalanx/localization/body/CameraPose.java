@@ -87,6 +87,19 @@ public final class CameraPose {
         return new Vector2(cx + m00 * x + m01 * y + m02 * z, cy + m10 * x + m11 * y + m12 * z);
     }
 
+    /**
+     * Whether a point on the ground (level body frame, height z above the ground) lies within halfAngleDeg of the
+     * camera's axis both horizontally and vertically: the inverse of {@link #toBody}, for the server's square view cone.
+     */
+    public boolean inView(Vector2 ground, double z, double halfAngleDeg) {
+        double dx = ground.x() - cx, dy = ground.y() - cy, dz = z - torsoHeight - cz;
+        // camera frame = M^T (p - c)
+        double x = m00 * dx + m10 * dy + m20 * dz, y = m01 * dx + m11 * dy + m21 * dz, w = m02 * dx + m12 * dy + m22 * dz;
+        if (x <= 0) return false;
+        double limit = Math.toRadians(halfAngleDeg);
+        return Math.abs(Math.atan2(y, x)) <= limit && Math.abs(Math.atan2(w, Math.hypot(x, y))) <= limit;
+    }
+
     /** Height of the torso centre above the ground (forward kinematics of the supporting leg). */
     public double torsoHeight() { return torsoHeight; }
 

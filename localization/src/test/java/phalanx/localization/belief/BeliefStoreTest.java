@@ -78,6 +78,52 @@ class BeliefStoreTest {
         assertEquals(0, b.ballAge(), 1e-9);
     }
 
+    private Perception frameWithoutBall(double t, Pose2 truth) {
+        return Scenes.perception(t, Scenes.vision(Scenes.landmarks(field, Side.LEFT, truth, RIGHT_END), null, List.of()));
+    }
+
+    /** The server reports every object in its view cone: a believed ball in view that is not seen is not there. */
+    @Test
+    void aBallNotSeenWhereItIsBelievedInViewIsDroppedAfterBallMissFrames() {
+        int frames = LocalizationConfig.DEFAULT.ballMissFrames();
+        assertTrue(frames >= 2, "the default needs more than one frame: a single frame may miss");
+        BeliefStore s = store(LocalizationConfig.Filter.EKF);
+        s.update(Scenes.gameState(0, 3, Side.LEFT));
+        Pose2 truth = new Pose2(-5, 2, 7);
+        WorldBelief b = null;
+        for (int i = 1; i <= 10; i++) b = s.update(frameWithBall(i * 0.06, truth, -2, 1.5));   // 3 m ahead, in view
+        assertNotNull(b.ballGlobal());
+        for (int i = 1; i < frames; i++) b = s.update(frameWithoutBall(0.6 + i * 0.06, truth));
+        assertNotNull(b.ballGlobal(), (frames - 1) + " frames without it keep the ball");
+        b = s.update(frameWithoutBall(0.6 + frames * 0.06, truth));
+        assertNull(b.ballGlobal(), "the ball was kicked away: gone after " + frames + " frames");
+        assertNull(b.ballRelative());
+        assertEquals(1, s.stats().ballsMissed());
+        // The next sighting starts the ball again wherever it is.
+        b = s.update(frameWithBall(0.6 + (frames + 1) * 0.06, truth, 6, -1));
+        assertEquals(6, b.ballGlobal().x(), 0.01);
+    }
+
+    @Test
+    void aBallOutsideTheViewIsKeptUnseen() {
+        BeliefStore s = store(LocalizationConfig.Filter.EKF);
+        s.update(Scenes.gameState(0, 3, Side.LEFT));
+        Pose2 truth = new Pose2(-5, 2, 7);
+        WorldBelief b = null;
+        // 3 m to the robot's left (97° in the field): outside the 120° view of a head turned straight ahead.
+        for (int i = 1; i <= 10; i++) b = s.update(frameWithBall(i * 0.06, truth, -5.37, 4.98));
+        for (int i = 1; i <= 20; i++) b = s.update(frameWithoutBall(0.6 + i * 0.06, truth));
+        assertNotNull(b.ballGlobal(), "not in view, so not seen, and still believed");
+        assertEquals(-5.37, b.ballGlobal().x(), 0.02);
+        assertEquals(0, s.stats().ballsMissed());
+        // Off: the ball in view stays believed however long it is not seen.
+        BeliefStore off = new BeliefStore(field, LocalizationConfig.DEFAULT.withBallMiss(0, 50), NaoModel.ofType(0), "Us", null, 0);
+        off.update(Scenes.gameState(0, 3, Side.LEFT));
+        for (int i = 1; i <= 10; i++) b = off.update(frameWithBall(i * 0.06, truth, -2, 1.5));
+        for (int i = 1; i <= 20; i++) b = off.update(frameWithoutBall(0.6 + i * 0.06, truth));
+        assertNotNull(b.ballGlobal());
+    }
+
     @Test
     void rightSideBeliefsAreInTheTeamsOwnFrame() {
         BeliefStore s = store(LocalizationConfig.Filter.FIFO);
