@@ -165,18 +165,51 @@ public final class Goalkeeper implements Action {
         double outside = config.keeper().challengeOutside();
         // A ball just outside the area is gone for (walking slowly out there, below); farther out the keeper stops inside.
         boolean goesOut = outside > 0 && inGoalArea(s.field(), ball, outside) && !inGoalArea(s.field(), past, -AREA_MARGIN);
-        Vector2 to = clampToOwnArea(s.field(), past, goesOut ? outside + AREA_MARGIN : -AREA_MARGIN);
+        Pose2 self = Facts.self(s, config);
+        Vector2 to = clampToOwnArea(s.field(), self == null ? past : roundTheBall(self.position(), ball, u, past), goesOut ? outside + AREA_MARGIN : -AREA_MARGIN);
+        challengeTarget = to;
         if (toBall == null) toBall = new WalkToCoordinate(config, to.x(), to.y(), u.angleDeg());
         else toBall.target(to.x(), to.y(), u.angleDeg());
         Decision walk = toBall.decide(s);
         // Without a self pose the walk turns to localize, and its head must pan for landmarks, not track the ball:
         // in session 20's g1 the keeper challenged 17.5 s with no self pose, the ball 1.3 m away, and the goal came from there.
-        Pose2 self = Facts.self(s, config);
         if (self == null) return walk;
         // Going out, it is under the charging speed before it leaves the area (the walk needs ~0.4 m to slow down).
         boolean slow = goesOut && !inGoalArea(s.field(), self.position(), -SLOW_BEFORE_EDGE);
         return Decision.of(slow ? ChargingGuard.belowChargingSpeed(walk.move(), config.charging()) : walk.move(), track.head(s));
     }
+
+    /**
+     * Where the Challenge walks: through the ball (past) only from the goal's side of it, near the push line. A keeper
+     * beyond the ball along the push direction u first goes round it, to its flank (ROUND_SIDE to the keeper's side of the
+     * line); one level with it, or behind but off the line, first to the point ROUND_BEHIND on the goal's side. In session 21's g1 (C1, 427 s) the ball lay 8 s on
+     * our goal line behind the keeper, which walked to the point past it, beside the ball, and stood; an opponent
+     * walked it in.
+     */
+    private static Vector2 roundTheBall(Vector2 self, Vector2 ball, Vector2 u, Vector2 past) {
+        Vector2 d = self.minus(ball);
+        Vector2 perp = new Vector2(-u.y(), u.x());
+        double along = d.x() * u.x() + d.y() * u.y(), lateral = d.x() * perp.x() + d.y() * perp.y();
+        // Behind the ball within a cone about the push line: walking to "past" meets the ball.
+        if (along <= -ROUND_BEHIND_OK && Math.abs(lateral) <= Math.max(ROUND_LATERAL_OK, -along * ROUND_CONE_SLOPE)) return past;
+        if (along > 0) return ball.plus(perp.times(Math.copySign(ROUND_SIDE, lateral))).minus(u.times(ROUND_BEHIND_OK));
+        return ball.minus(u.times(ROUND_BEHIND));
+    }
+
+    /** The last point the Challenge walked to (tests). */
+    Vector2 challengeTarget() { return challengeTarget; }
+
+    private Vector2 challengeTarget;
+    /** On the goal's side of the ball by this much along the push, the keeper walks through it, m. */
+    private static final double ROUND_BEHIND_OK = 0.1;
+    /** Behind the ball, the keeper walks through it when this close to the push line, m, ... */
+    private static final double ROUND_LATERAL_OK = 0.15;
+    /** ... or within this slope of it (tan 35°: farther back it may be farther to the side). */
+    private static final double ROUND_CONE_SLOPE = 0.7;
+    /** Going round: the flank this far to the side of the ball (torso half-width and the ball's radius, with room), m. */
+    private static final double ROUND_SIDE = 0.35;
+    /** Going round: then this far behind the ball on the goal's side, m. */
+    private static final double ROUND_BEHIND = 0.3;
 
     /** How far inside its penalty area's edges the keeper's Challenge stops. */
     private static final double AREA_MARGIN = 0.15;

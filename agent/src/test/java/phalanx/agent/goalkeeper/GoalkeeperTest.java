@@ -236,6 +236,31 @@ class GoalkeeperTest {
         assertFalse(stays instanceof Move.Walk || stays instanceof Move.Omni, "walked out of the area: " + stays);
     }
 
+    @Test
+    void challengeGoesRoundABallBehindTheKeeperBeforeWalkingThroughIt() {
+        // Session 21's g1, 422-427 s: the ball lay at (-14.95, 0.39) on our goal line, the keeper at (-14.5, 0.2) in front
+        // of it and 0.47 m to the side of the push line from the goal's centre through the ball, u = (0.13, 0.99): walking
+        // to the point past the ball it went by it. Now it first steps to the goal's side of the ball, on the push line.
+        Goalkeeper k = guarding();
+        k.decide(World.at(-14.5, 0.2, 90).ballAt(-14.95, 0.39).situation());
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        phalanx.model.field.Vector2 behind = k.challengeTarget();
+        assertEquals(-14.99, behind.x(), 0.02, "behind the ball: " + behind);
+        assertEquals(0.09, behind.y(), 0.02, "behind the ball: " + behind);
+        // There, it walks through the ball along u, pushing it toward the post rather than over the line.
+        k.decide(World.at(-14.99, 0.1, 83).ballAt(-14.95, 0.39).situation());
+        assertTrue(k.challengeTarget().y() > 0.39 + 0.2, "through the ball: " + k.challengeTarget());
+        // A keeper beyond the ball along the push (it got past it) first goes to its flank, on its own side.
+        Goalkeeper b = guarding();
+        b.decide(World.at(-14.6, 0.9, -90).ballAt(-14.95, 0.39).situation());
+        phalanx.model.field.Vector2 flank = b.challengeTarget();
+        assertTrue(flank.x() > -14.95 + 0.25 && flank.y() < 0.39, "the flank on the field side, not past the ball: " + flank);
+        // A ball in front of the keeper is walked through at once, as before.
+        Goalkeeper f = guarding();
+        f.decide(World.at(-14.5, 0.1, 0).ballAt(-13.5, 0.2).situation());
+        assertTrue(f.challengeTarget().x() > -13.5, "straight through the ball: " + f.challengeTarget());
+    }
+
     private static AgentConfig.Keeper withOutside(AgentConfig.Keeper k, double outside) {
         return new AgentConfig.Keeper(k.spotOffset(), k.diveSeconds(), k.postMargin(), k.bodyBlock(), k.ballDecay(), k.minApproachSpeed(),
                 k.relocalizeDistance(), k.liberoClearance(), k.liberoExitMargin(), k.liberoMaxSpeed(), k.shotSpeed(), k.dribbleDistance(),
