@@ -143,9 +143,14 @@ public final class OnBall implements Action {
         return from == null || s.field() == null ? Double.NaN : s.field().opponentGoal().minus(from).angleDeg();
     }
 
-    /** No ball, or (once at the ball) the ball got away: start again. */
+    /**
+     * No ball, or (once at the ball) the ball got away: start again. A dribble pushes the ball on with every step, so
+     * there it is away only beyond dribbleRestartDistance or when no longer ahead (more than 45° off the heading).
+     */
     private boolean lost(Vector2 ball) {
         if (ball == null) return true;
+        if (state == State.DRIBBLE && ball.x() > 0 && Math.abs(ball.y()) <= ball.x())
+            return ball.norm() > Math.max(config.kick().restartDistance(), config.kick().dribbleRestartDistance());
         return state != State.WALK_TO_BALL && ball.norm() > config.kick().restartDistance();
     }
 

@@ -116,6 +116,29 @@ class OnBallTest {
     }
 
     @Test
+    void aDribbleFollowsTheBallItPushedOnAndStartsAgainOnlyWhenItIsFarOrNotAhead() {
+        // Pressed at (8, 0) facing 20°: DRIBBLE. Its step pushes the ball 0.9 m straight on (session 21: 0.5-1.4 m).
+        OnBall a = new OnBall(C);
+        a.decide(World.at(8, 0, 20).ballRel(0.2, 0).opponentAt(5, 8.6, 0.4).situation());
+        assertEquals(OnBall.State.DRIBBLE, a.state());
+        Move on = a.decide(World.at(8.1, 0.05, 20).ballRel(0.9, 0.05).opponentAt(5, 8.6, 1.0).situation()).move();
+        assertEquals(OnBall.State.DRIBBLE, a.state(), "the ball it pushed on is followed, not approached again");
+        assertTrue(on instanceof Move.Walk || on instanceof Move.Omni, on.toString());
+        // 1.7 m ahead (beyond 1.5 m) or 0.9 m to the side (not ahead): taken away, start again.
+        a.decide(World.at(8.1, 0.05, 20).ballRel(1.7, 0.1).opponentAt(5, 8.6, 1.0).situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, a.state());
+        OnBall b = new OnBall(C);
+        b.decide(World.at(8, 0, 20).ballRel(0.2, 0).opponentAt(5, 8.6, 0.4).situation());
+        b.decide(World.at(8, 0, 20).ballRel(0.3, 0.9).opponentAt(5, 8.6, 0.4).situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, b.state());
+        // Off (dribbleRestartDistance 0): the old rule, restartDistance (0.5 m) wherever the ball is.
+        OnBall c = new OnBall(C.withKick(C.kick().withDribbleRestartDistance(0)));
+        c.decide(World.at(8, 0, 20).ballRel(0.2, 0).opponentAt(5, 8.6, 0.4).situation());
+        c.decide(World.at(8.1, 0.05, 20).ballRel(0.9, 0.05).opponentAt(5, 8.6, 1.0).situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, c.state());
+    }
+
+    @Test
     void startsAgainWhenTheBallIsTakenAwayOrLost() {
         OnBall a = new OnBall(C);
         a.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation());
