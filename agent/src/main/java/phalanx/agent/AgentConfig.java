@@ -94,8 +94,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      * @param pressureDistance  in PlayOn, at the ball with an opponent this near it, On Ball does not go round the ball
      *                          to line up a kick but walks it on at once (ours, issue 18: at UT Austin Villa's goals our
      *                          nearest player stood 0.3-0.7 m from the ball, lining up, while theirs kicked); 0 = never ...
-     * @param pressureMaxDeg    ... when its heading is within this of the direction to the opponent goal (otherwise the
-     *                          push would go toward our own goal)
+     * @param pressureMaxDeg    ... when the push (from it to the ball) is within this of the direction to the opponent goal
+     *                          (otherwise it would go toward our own goal); 90: any push not back toward our half
+     *                          (session 21: 60, the heading's, before the push went from where the player stands)
      * @param shootWithin       ... but nearer the opponent goal than this it lines up and kicks (the normal kick) instead
      *                          of dribbling on, with or without an opponent near (ours, issue 18: in g18b our dribble
      *                          reached 2.5 m from UTA's goal and their keeper cleared it 16 s later); 0 = dribble on
@@ -103,6 +104,11 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          (ours, issue 18: each step of the dribble pushes the ball 0.5-1.4 m on, and with
      *                          restartDistance every push sent the player back to the approach and the alignment: 30 of
      *                          35 dribbles in session 21's games ended so, the ball straight ahead; docs/matches.md)
+     * @param pressureReach     pressed, a player walking to the ball goes through it from where it stands once the ball
+     *                          is this near, instead of going round it to the spot behind it (ours, issue 18: in session
+     *                          21's games the ball lay still with players of both teams within 1 m of it for 190-200 s a
+     *                          game, and UT Austin Villa moved it next in 36 of 58 such contests; our player side-steps
+     *                          at 0.1 m/s, slower still beside an opponent); 0 = only once aligned, as before
      */
     /**
      * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params
@@ -114,9 +120,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     public record Kick(double spotX, double spotY, double strongSpotX, double strongSpotY, double toleranceX, double toleranceFarX, double toleranceY, double restartDistance,
                        double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
                        double oneShotTimeout, double dribbleWithin, double pressureDistance, double pressureMaxDeg,
-                       double shootWithin, double dribbleRestartDistance) {
+                       double shootWithin, double dribbleRestartDistance, double pressureReach) {
         public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0,
-                1.0, 60, 4.0, 1.5);
+                1.0, 90, 4.0, 1.5, 0.8);
 
         /**
          * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
@@ -136,27 +142,33 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         /** The same with another strong-kick spot (a robot type with its own strong_kick.xml). */
         public Kick withStrongSpot(double x, double y) {
             return new Kick(spotX, spotY, x, y, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach);
         }
 
         public Kick withDribbleWithin(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, metres, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance);
+                    strongBeyond, oneShotTimeout, metres, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach);
         }
 
         public Kick withPressureDistance(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, metres, pressureMaxDeg, shootWithin, dribbleRestartDistance);
+                    strongBeyond, oneShotTimeout, dribbleWithin, metres, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach);
         }
 
         public Kick withDribbleRestartDistance(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, metres);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, metres, pressureReach);
+        }
+
+        /** The same with another reach and angle for walking through a contested ball (reach 0 = only once aligned). */
+        public Kick withPressure(double reach, double maxDeg) {
+            return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, maxDeg, shootWithin, dribbleRestartDistance, reach);
         }
 
         public Kick withShootWithin(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, metres, dribbleRestartDistance);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, metres, dribbleRestartDistance, pressureReach);
         }
     }
 

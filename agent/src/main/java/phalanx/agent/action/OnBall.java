@@ -21,8 +21,9 @@ import phalanx.model.field.Vector2;
  * the ball, facing the goal, with the omnidirectional walk), so the align orbit has little left to do.
  * Ours too (issue 18): at the ball in PlayOn with an opponent near it ({@code AgentConfig.Kick.pressureDistance}),
  * and facing within pressureMaxDeg of the opponent goal, it walks the ball on along its heading at once
- * instead of going round it and lining up a kick, which an opponent at the ball does not wait for. Within
- * {@code shootWithin} of the opponent goal it neither dribbles nor walks on: it lines up and shoots.
+ * instead of going round it and lining up a kick, which an opponent at the ball does not wait for; walking to such a
+ * ball it goes through it from where it stands once within {@code pressureReach}, as long as that push does not go back
+ * toward our half. Within {@code shootWithin} of the opponent goal it neither dribbles nor walks on: it lines up and shoots.
  */
 public final class OnBall implements Action {
     public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK, DRIBBLE }
@@ -64,6 +65,7 @@ public final class OnBall implements Action {
         for (int i = 0; i < State.values().length + 1; i++) {
             switch (state) {
                 case WALK_TO_BALL -> {
+                    if (contested(s, ball)) { state = State.DRIBBLE; continue; }
                     if (!walk.done(s)) {
                         boolean approaches = config.approach().enabled() && approach.usable(s) && !approach.done(s);
                         return approaches ? approach.decide(s) : walk.decide(s);
@@ -124,8 +126,9 @@ public final class OnBall implements Action {
     private boolean shoots(double distanceToGoal) { return distanceToGoal < config.kick().shootWithin(); }
 
     /**
-     * Pressed: PlayOn, an opponent within pressureDistance of the ball, and the own heading within pressureMaxDeg
-     * of the direction to the opponent goal. Then the direction to walk the ball on (the heading, field frame), else NaN.
+     * Pressed: PlayOn, an opponent within pressureDistance of the ball, and the push from here through the ball within
+     * pressureMaxDeg of the direction to the opponent goal. Then the direction to walk the ball on (field frame), else NaN.
+     * The push is the line from the player to the ball (its heading once the ball is at its feet).
      */
     private double pressedHeading(Situation s) {
         AgentConfig.Kick k = config.kick();
@@ -134,7 +137,18 @@ public final class OnBall implements Action {
         Vector2 ball = Facts.ballGlobal(s, config);
         double toGoal = goalDirection(s);
         if (self == null || Double.isNaN(toGoal) || !Facts.opponentNear(s, config, ball, k.pressureDistance())) return Double.NaN;
-        return Math.abs(Angles.difference(self.thetaDeg(), toGoal)) <= k.pressureMaxDeg() ? self.thetaDeg() : Double.NaN;
+        Vector2 push = ball.minus(self.position());
+        double dir = push.norm() < PUSH_AT_FEET ? self.thetaDeg() : push.angleDeg();
+        return Math.abs(Angles.difference(dir, toGoal)) <= k.pressureMaxDeg() ? dir : Double.NaN;
+    }
+
+    /** Nearer than this the ball is at the feet and the push goes along the heading, m. */
+    private static final double PUSH_AT_FEET = 0.25;
+
+    /** Walking to the ball, pressed, with the ball within pressureReach: go through it from here (a contest). */
+    private boolean contested(Situation s, Vector2 ball) {
+        double reach = config.kick().pressureReach();
+        return reach > 0 && ball != null && ball.norm() <= reach && !Double.isNaN(pressedHeading(s));
     }
 
     /** Field-frame direction from the ball to the opponent goal's centre, degrees; NaN without a ball or field. */

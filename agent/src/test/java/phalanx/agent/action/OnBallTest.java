@@ -139,6 +139,31 @@ class OnBallTest {
     }
 
     @Test
+    void walkingToAContestedBallItGoesThroughItFromWhereItStandsUnlessThatPushesItTowardOurGoal() {
+        // Session 21's g1 at 284 s: our player at (-12.2, -0.6) facing +x, the ball still at (-12.07, -0.96), an
+        // opponent 0.2 m beyond it lining it up. It side-stepped toward the spot behind the ball for 10 s.
+        OnBall a = new OnBall(C);
+        Move m = a.decide(World.at(-12.2, -0.6, 0).ballAt(-12.07, -0.96).opponentAt(4, -11.87, -0.93).situation()).move();
+        assertEquals(OnBall.State.DRIBBLE, a.state(), "through the ball toward -y (70° off the goal's direction), now");
+        assertFalse(m instanceof Move.SideStep || m instanceof Move.Omni, "not the approach's side steps: " + m);
+        // From the far side the push would go toward our goal: approach as before.
+        OnBall b = new OnBall(C);
+        b.decide(World.at(-11.6, -0.9, 180).ballAt(-12.07, -0.96).opponentAt(4, -12.3, -0.5).situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, b.state());
+        // Nobody near the ball, or the ball beyond pressureReach (0.8 m): the approach as before.
+        OnBall c = new OnBall(C);
+        c.decide(World.at(-12.2, -0.6, 0).ballAt(-12.07, -0.96).situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, c.state());
+        OnBall d = new OnBall(C);
+        d.decide(World.at(-12.2, 0.3, 0).ballAt(-12.07, -0.96).opponentAt(4, -11.87, -0.93).situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, d.state());
+        // Off (pressureReach 0): the approach as before.
+        OnBall e = new OnBall(C.withKick(C.kick().withPressure(0, C.kick().pressureMaxDeg())));
+        e.decide(World.at(-12.2, -0.6, 0).ballAt(-12.07, -0.96).opponentAt(4, -11.87, -0.93).situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, e.state());
+    }
+
+    @Test
     void startsAgainWhenTheBallIsTakenAwayOrLost() {
         OnBall a = new OnBall(C);
         a.decide(World.at(0, 0, 90).ballRel(0.25, -0.055).situation());
