@@ -68,6 +68,9 @@ public final class PlayerRuntime {
     }
 
     public long cycles() { return cycles; }
+
+    /** What the belief store saw and skipped so far (logged with the think times, for match reviews). */
+    public phalanx.localization.belief.BeliefStats beliefStats() { return parts.beliefs().stats(); }
     public long malformed() { return malformed; }
     public PlayMode playMode() { return playMode; }
 

@@ -61,6 +61,7 @@ public final class ThinkLoop {
                     times.add(wall, cpu < 0 || cpuStart < 0 ? -1 : cpu - cpuStart);
                 }
                 connection.send(reply);
+                if (runtime.cycles() % ThinkTimes.REPORT_EVERY == 0) LOG.info("beliefs " + runtime.beliefStats());
                 if (runtime.cycles() == 2) LOG.info("in the game as " + options.team() + " " + options.unum());
             }
         } catch (ConnectionClosedException e) {
@@ -106,6 +107,7 @@ public final class ThinkLoop {
 
     private Outcome end(String reason) {
         LOG.info(times.summary());
+        LOG.info("beliefs " + runtime.beliefStats());
         return new Outcome(runtime.cycles(), runtime.malformed(), reason, runtime.playMode());
     }
 }
