@@ -18,7 +18,6 @@ import phalanx.model.field.Vector2;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
@@ -255,7 +254,7 @@ public final class LocalizeEval {
         String team = "";
         Path eff = Recordings.effectorFile(prefix);
         if (Files.exists(eff)) {
-            List<String> e = Files.readAllLines(eff, StandardCharsets.ISO_8859_1);
+            List<String> e = Recordings.lines(eff);
             for (int i = 0; i < Math.min(2, e.size()); i++) {
                 Matcher m = SCENE.matcher(e.get(i));
                 if (m.find() && m.group(1) != null) type = Integer.parseInt(m.group(1));

@@ -1,11 +1,10 @@
 package phalanx.comm.recording;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * A recording's {@code X_groundtruth.txt} (format in ../shared/recordings/README.md): one line per
@@ -34,7 +33,7 @@ public final class GroundTruth {
 
     /** Reads a ground-truth file; a line that cannot be read is an IOException naming file and line. */
     public static List<Line> read(Path file) throws IOException {
-        List<String> raw = Files.readAllLines(file, StandardCharsets.US_ASCII);
+        List<String> raw = Recordings.lines(file);
         List<Line> out = new ArrayList<>(raw.size());
         int n = 0;
         for (String s : raw) {
@@ -52,6 +51,38 @@ public final class GroundTruth {
             }
         }
         return out;
+    }
+
+    /** The header line of a ground-truth file (without the newline). */
+    public static final String HEADER = "# now game_time play_mode torso_x torso_y torso_z r11 r12 r13 r21 r22 r23 r31 r32 r33 torso_yaw_deg ball_x ball_y ball_z";
+
+    /**
+     * One data line as {@link #read} reads it (the shared recordings' precision: 5 decimals for positions, 6 for R,
+     * 3 for the yaw). {@code r} null or a NaN position: the torso fields are {@code nan}; {@code ball} null: the ball's.
+     */
+    public static String format(double now, double gameTime, String playMode, double x, double y, double z, double[] r,
+                                double bx, double by, double bz) {
+        StringBuilder sb = new StringBuilder(200);
+        sb.append(String.format(Locale.ROOT, "%.2f %s %s", now, gameTime(gameTime), playMode));
+        boolean torso = r != null && Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z);
+        if (torso) {
+            sb.append(String.format(Locale.ROOT, " %.5f %.5f %.5f", x, y, z));
+            for (double v : r) sb.append(String.format(Locale.ROOT, " %.6f", v));
+            sb.append(String.format(Locale.ROOT, " %.3f", Math.toDegrees(Math.atan2(r[4], r[1]))));
+        } else {
+            sb.append(" nan".repeat(13));
+        }
+        if (Double.isFinite(bx) && Double.isFinite(by)) sb.append(String.format(Locale.ROOT, " %.5f %.5f %.5f", bx, by, bz));
+        else sb.append(" nan nan nan");
+        return sb.toString();
+    }
+
+    /** Game time as the shared recordings write it: "0", "0.16", "12.3". */
+    private static String gameTime(double t) {
+        if (!Double.isFinite(t)) return "nan";
+        String s = String.format(Locale.ROOT, "%.2f", t);
+        s = s.replaceAll("0+$", "");
+        return s.endsWith(".") ? s.substring(0, s.length() - 1) : s;
     }
 
     private static double num(String s) {

@@ -1,6 +1,9 @@
 package phalanx.comm.recording;
 
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -8,6 +11,7 @@ import java.nio.file.Paths;
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Stream;
+import java.util.zip.GZIPInputStream;
 
 /**
  * Finds the real server recordings in {@code ../shared/recordings} (format in its README) and reads
@@ -57,16 +61,33 @@ public final class Recordings {
         return sharedDir().resolve("recordings").resolve(name);
     }
 
+    /**
+     * The recording's files; each may be gzipped ({@code S1_perceptors.txt.gz}, the project's own fixtures are):
+     * the plain file when it exists, else the {@code .gz} one when that exists, else the plain name.
+     */
     public static Path perceptorFile(Path prefix) { return sibling(prefix, "_perceptors.txt"); }
     public static Path effectorFile(Path prefix) { return sibling(prefix, "_effectors.txt"); }
     public static Path groundTruthFile(Path prefix) { return sibling(prefix, "_groundtruth.txt"); }
 
     /** The perceptor messages, one per line, exactly as the server sent them. */
     public static List<String> perceptorMessages(Path prefix) throws IOException {
-        return Files.readAllLines(perceptorFile(prefix), StandardCharsets.ISO_8859_1);
+        return lines(perceptorFile(prefix));
+    }
+
+    /** A text file's lines (ISO-8859-1, as the server's bytes), gunzipped when its name ends in {@code .gz}. */
+    public static List<String> lines(Path file) throws IOException {
+        if (!file.getFileName().toString().endsWith(".gz")) return Files.readAllLines(file, StandardCharsets.ISO_8859_1);
+        try (BufferedReader r = new BufferedReader(new InputStreamReader(new GZIPInputStream(Files.newInputStream(file)),
+                StandardCharsets.ISO_8859_1))) {
+            return r.lines().toList();
+        } catch (UncheckedIOException e) {
+            throw e.getCause();
+        }
     }
 
     private static Path sibling(Path prefix, String suffix) {
-        return prefix.resolveSibling(prefix.getFileName() + suffix);
+        Path plain = prefix.resolveSibling(prefix.getFileName() + suffix);
+        Path gz = prefix.resolveSibling(prefix.getFileName() + suffix + ".gz");
+        return !Files.exists(plain) && Files.exists(gz) ? gz : plain;
     }
 }
