@@ -91,7 +91,7 @@ public final class Recorder {
 
     /** What a run found about its own pairing, printed at the end (and a reason to fail when it is wrong). */
     static final class Tally {
-        int lines, clockLines, clockMismatches, noPicture, malformed;
+        int lines, clockLines, clockMismatches, noPicture, malformed, extraPictures;
         String firstMismatch;
     }
 
@@ -137,9 +137,9 @@ public final class Recorder {
             tr.write("# now_of_last_perceptor_message_received  trainer_command_sent_on_monitor_port\n");
             Tally tally = record(o, sc, type, root, port, mon, bots, per, eff, gt, tr);
             System.out.printf(Locale.ROOT, "record %s: %s, type %d, %s side, %d lines; game clock running on %d lines, %d where the GS time and the"
-                            + " monitor's differ%s; %d lines without a new monitor picture (torso nan); %d malformed messages%n",
+                            + " monitor's differ%s; %d lines without a monitor picture (torso nan), %d pictures more than one a cycle; %d malformed messages%n",
                     o.name(), sc.name(), type, o.right() ? "right" : "left", tally.lines, tally.clockLines, tally.clockMismatches,
-                    tally.firstMismatch == null ? "" : " (first: " + tally.firstMismatch + ")", tally.noPicture, tally.malformed);
+                    tally.firstMismatch == null ? "" : " (first: " + tally.firstMismatch + ")", tally.noPicture, tally.extraPictures, tally.malformed);
             return tally.clockMismatches == 0 ? 0 : 1;
         } catch (IOException e) {
             System.err.println("record: " + e.getMessage() + " (server log: " + server.log() + ")");
@@ -170,7 +170,7 @@ public final class Recorder {
 
         MonitorScene scene = new MonitorScene();
         MonitorHeader header = new MonitorHeader();
-        MatchState state = MatchState.INITIAL;
+        Picture picture = null;
         Tally tally = new Tally();
         Bot recorded = null;
         int next = 0;
@@ -208,21 +208,11 @@ public final class Recorder {
                         String joined = b.joinProblem();
                         if (joined != null) throw new IOException(joined);
                         if (b == recorded) {
-                            // its picture came before it: drain the monitor now, before any reply lets the server step
-                            int before = scene.messages();
-                            while (mon.awaitData(0)) {
-                                mon.reader().next();
-                                String m = mon.reader().text();
-                                state = header.apply(state, m);
-                                try {
-                                    scene.apply(m);
-                                } catch (IllegalArgumentException e) {
-                                    System.err.println("record: a monitor message it could not read: " + e.getMessage());
-                                }
-                            }
-                            boolean newPicture = scene.messages() > before;
+                            // this message's picture was read after the message before it (null: the server skipped it)
+                            if (recorded.received() == 1) picture = drain(mon, scene, header, recorded, 0, tally);
+                            Picture mine = picture;
                             per.write(text + "\n");
-                            line(gt, recorded, scene, state, newPicture, tally);
+                            line(gt, recorded, mine, tally);
                             List<String> cmds = sc.trainer().get(b.received());
                             if (cmds != null) {
                                 for (String c : cmds) {
@@ -231,6 +221,9 @@ public final class Recorder {
                                 }
                             }
                             mon.send("(reqfullstate)");
+                            // the server sends the next picture right after this message, before any reply (it acts on the
+                            // replies to the message before): wait for it, so that the next line gets its own picture
+                            picture = drain(mon, scene, header, recorded, PICTURE_WAIT_MILLIS, tally);
                             eff.write(b.reply() + "\n");
                         } else {
                             b.reply();
@@ -257,23 +250,62 @@ public final class Recorder {
         return tally;
     }
 
+    /**
+     * How long to wait for the picture that follows a message. The server sends it after stepping, without waiting for
+     * any reply; it skips one in the cycle after a robot was created (recordings README), and then none comes.
+     */
+    static final long PICTURE_WAIT_MILLIS = 300;
+
+    /** What a monitor picture says of the recorded robot: game time, play mode, torso (null: not in the scene), ball. */
+    record Picture(double time, String playMode, MonitorScene.Pose torso, double[] ball) {}
+
+    private static MatchState state = MatchState.INITIAL;
+
+    /**
+     * Waits up to {@code millis} for a monitor message and reads every one waiting; the picture after the last, or null
+     * when none came. More than one at a time is counted ({@code extraPictures}): a sign the pairing slipped.
+     */
+    private static Picture drain(ServerConnection mon, MonitorScene scene, MonitorHeader header, Bot rec, long millis, Tally tally) throws IOException {
+        if (!mon.awaitData(millis)) return null;
+        int n = 0;
+        do {
+            mon.reader().next();
+            String m = mon.reader().text();
+            state = header.apply(state, m);
+            try {
+                scene.apply(m);
+            } catch (IllegalArgumentException e) {
+                System.err.println("record: a monitor message it could not read: " + e.getMessage());
+            }
+            n++;
+        } while (mon.awaitData(0));
+        if (n > 1 && rec.received() > 1) tally.extraPictures += n - 1;
+        MonitorScene.Pose t = scene.torso(rec.unum, rec.side == Side.RIGHT ? "Right" : "Left");
+        return new Picture(state.time(), state.playMode().wireName(), t, scene.ball());
+    }
+
     /** The ground-truth line of the recorded robot's message just read. */
-    private static void line(Writer gt, Bot rec, MonitorScene scene, MatchState state, boolean newPicture, Tally tally) throws IOException {
+    private static void line(Writer gt, Bot rec, Picture pic, Tally tally) throws IOException {
         tally.lines++;
         Perception p = rec.last();
         double now = p == null ? Double.NaN : p.time();
-        MonitorScene.Pose t = newPicture ? scene.torso(rec.unum, rec.side == Side.RIGHT ? "Right" : "Left") : null;
-        double[] ball = newPicture ? scene.ball() : null;
-        if (!newPicture) tally.noPicture++;
-        gt.write(GroundTruth.format(now, state.time(), state.playMode().wireName(),
+        if (pic == null) {
+            tally.noPicture++;
+            gt.write(GroundTruth.format(now, state.time(), state.playMode().wireName(), Double.NaN, Double.NaN, Double.NaN, null,
+                    Double.NaN, Double.NaN, Double.NaN) + "\n");
+            return;
+        }
+        MonitorScene.Pose t = pic.torso();
+        double[] ball = pic.ball();
+        gt.write(GroundTruth.format(now, pic.time(), pic.playMode(),
                 t == null ? Double.NaN : t.x(), t == null ? Double.NaN : t.y(), t == null ? Double.NaN : t.z(), t == null ? null : t.r(),
                 ball == null ? Double.NaN : ball[0], ball == null ? Double.NaN : ball[1], ball == null ? Double.NaN : ball[2]) + "\n");
-        if (p != null && p.gameState() != null && state.time() > 0 && p.gameState().gameTime() > 0) {
+        if (p != null && p.gameState() != null && pic.time() > 0 && p.gameState().gameTime() > 0) {
             tally.clockLines++;
-            if (Math.abs(p.gameState().gameTime() - state.time()) > 0.005) {
+            if (Math.abs(p.gameState().gameTime() - pic.time()) > 0.005) {
                 tally.clockMismatches++;
                 if (tally.firstMismatch == null)
-                    tally.firstMismatch = String.format(Locale.ROOT, "line %d: GS %.2f, monitor %.2f", tally.lines, p.gameState().gameTime(), state.time());
+                    tally.firstMismatch = String.format(Locale.ROOT, "line %d: GS %.2f, monitor %.2f", tally.lines, p.gameState().gameTime(), pic.time());
             }
         }
     }
