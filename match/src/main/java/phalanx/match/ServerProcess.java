@@ -82,11 +82,14 @@ public final class ServerProcess {
     public static int freePortPair(int from) { return freePortPair(from, 400); }
 
     /** A free agent port P in [from, from + span) with P+100 free for the monitor. */
-    public static int freePortPair(int from, int span) {
+    public static int freePortPair(int from, int span) { return freePortPair(from, span, 100); }
+
+    /** A free agent port P in [from, from + span) with P+{@code monitorOffset} free for the monitor. */
+    public static int freePortPair(int from, int span, int monitorOffset) {
         for (int p = from; p < from + span; p++) {
-            if (portFree(p) && portFree(p + 100)) return p;
+            if (portFree(p) && portFree(p + monitorOffset)) return p;
         }
-        throw new IllegalStateException("no free pair of ports (P, P+100) with P from " + from + " to " + (from + span - 1));
+        throw new IllegalStateException("no free pair of ports (P, P+" + monitorOffset + ") with P from " + from + " to " + (from + span - 1));
     }
 
     private final Settings settings;

@@ -39,10 +39,13 @@ import java.util.zip.GZIPOutputStream;
 public final class Recorder {
     static final String USAGE = """
             usage: scripts/phalanx bench record SCENARIO --dir DIR [--name X] [--type T] [--side left|right] [--port P]
-              SCENARIO: walk-head, ball-roll, crowd, fall (bench/README.md "The recorder")
+              SCENARIO: walk-head, turn-head, ball-roll, crowd, fall (bench/README.md "The recorder")
               starts its own rcssserver3d ($RCSSSERVER3D or rcssserver3d on PATH; agent port P, default the first
-              free pair from 4600, monitor P+100), stages the scenario and writes DIR/X_{perceptors,effectors,groundtruth}.txt.gz
+              free pair from 4600 to 4799, monitor P+200), stages the scenario and writes DIR/X_{perceptors,effectors,groundtruth}.txt.gz
               and DIR/X_trainer.txt (X defaults to the scenario's name; the server's log goes to DIR/X-server/).""";
+
+    /** The monitor port is the agent port + 200: agent ports 4600-4799, monitor ports 4800-4999 (games use 3100-3700). */
+    static final int MONITOR_OFFSET = 200;
 
     record Options(String scenario, Path dir, String name, int type, boolean right, int port) {}
 
@@ -85,7 +88,7 @@ public final class Recorder {
         if (!Scenario.NAMES.contains(scenario)) throw new IllegalArgumentException("unknown scenario '" + scenario + "' (one of " + String.join(", ", Scenario.NAMES) + ")");
         if (dir == null) throw new IllegalArgumentException("--dir is required");
         if (type < -1 || type > 4) throw new IllegalArgumentException("--type must be 0-4, got " + type);
-        if (port != 0 && (port < 1024 || port > 65435)) throw new IllegalArgumentException("--port must be 1024-65435, got " + port);
+        if (port != 0 && (port < 1024 || port > 65335)) throw new IllegalArgumentException("--port must be 1024-65335, got " + port);
         return new Options(scenario, dir, name == null ? scenario : name, type, right, port);
     }
 
@@ -116,11 +119,17 @@ public final class Recorder {
         Files.createDirectories(o.dir());
         Path serverDir = o.dir().resolve(o.name() + "-server");
         Files.createDirectories(serverDir);
-        int port = o.port() != 0 ? o.port() : ServerProcess.freePortPair(4600, 100);
+        int port;
+        try {
+            port = o.port() != 0 ? o.port() : ServerProcess.freePortPair(4600, 200, MONITOR_OFFSET);
+        } catch (IllegalStateException e) {
+            System.err.println("record: " + e.getMessage());
+            return 3;
+        }
         ServerProcess server;
         try {
             // real time on, as the shared recordings: `now` stays small and the clock exact; $monitorStep 0.02: a picture per cycle
-            server = ServerProcess.start(new ServerProcess.Settings(port, port + 100, true, true, 600, 1), serverDir, "$monitorStep = 0.02");
+            server = ServerProcess.start(new ServerProcess.Settings(port, port + MONITOR_OFFSET, true, true, 600, 1), serverDir, "$monitorStep = 0.02");
         } catch (IOException e) {
             System.err.println("record: " + e.getMessage());
             return 3;
@@ -128,7 +137,7 @@ public final class Recorder {
         Thread stop = new Thread(server::stop, "record-stop");
         Runtime.getRuntime().addShutdownHook(stop);
         List<Bot> bots = new ArrayList<>();
-        try (ServerConnection mon = ServerConnection.connect("127.0.0.1", port + 100, 30_000);
+        try (ServerConnection mon = ServerConnection.connect("127.0.0.1", port + MONITOR_OFFSET, 30_000);
              Writer per = gz(o.dir().resolve(o.name() + "_perceptors.txt.gz"));
              Writer eff = gz(o.dir().resolve(o.name() + "_effectors.txt.gz"));
              Writer gt = gz(o.dir().resolve(o.name() + "_groundtruth.txt.gz"));

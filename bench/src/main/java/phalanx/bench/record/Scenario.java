@@ -19,7 +19,7 @@ record Scenario(String name, String about, int defaultType, Plan recorded, List<
     /** Another robot: team, unum, type, plan (its beam in the recorded team's own frame). */
     record Member(String team, int unum, int type, Plan plan) {}
 
-    static final List<String> NAMES = List.of("walk-head", "ball-roll", "crowd", "fall");
+    static final List<String> NAMES = List.of("walk-head", "turn-head", "ball-roll", "crowd", "fall");
 
     /** The scenario; {@code right}: the recorded robot plays on the right (the trainer's commands are mirrored). */
     static Scenario of(String name, boolean right) {
@@ -37,6 +37,16 @@ record Scenario(String name, String about, int defaultType, Plan recorded, List<
                         .stand(1).walk(5, 0.6, 0, 0).walk(4, 0, 0, 60).walk(5, 0.4, 0, 25).walk(4, 0, 0, -60).walk(4, 0.6, 0, 0).stand(1.5).build();
                 others.add(new Member("Dummy", 1, 0, Plan.at(12, -6, 180).stand(1).build()));
                 t.at(30, "(playMode PlayOn)");
+            }
+            case "turn-head" -> {
+                // the first case again, turning: the head sweeps fast while the robot turns in place both ways
+                type = 1;
+                about = "turns in place left 6 s, stands, turns right 6 s, side-steps left 3 s, turns left 4 s; head pans ±100° (3 s) and tilts -20±25° (2 s)";
+                rec = Plan.at(-3, -3, 45).pan(100, 3).tilt(-20, 25, 2)
+                        .stand(1).walk(6, 0, 0, 60).stand(1).walk(6, 0, 0, -60).walk(3, 0, 0.3, 0).walk(4, 0, 0, 60).stand(1).build();
+                others.add(new Member("Dummy", 1, 0, Plan.at(12, -6, 180).stand(1).build()));
+                t.at(30, "(playMode PlayOn)");
+                t.ball(32, 2, -1, 0, 0);
             }
             case "ball-roll" -> {
                 // balls rolled across the view, past the robot from behind and toward it, as kicks do (ball decay 1.06/s)

@@ -19,8 +19,8 @@ class RecorderTest {
 
     @Test
     void badFlagsAreNamed() {
-        assertEquals("no scenario (one of walk-head, ball-roll, crowd, fall)", msg("--dir", "d"));
-        assertEquals("unknown scenario 'dance' (one of walk-head, ball-roll, crowd, fall)", msg("dance", "--dir", "d"));
+        assertEquals("no scenario (one of walk-head, turn-head, ball-roll, crowd, fall)", msg("--dir", "d"));
+        assertEquals("unknown scenario 'dance' (one of walk-head, turn-head, ball-roll, crowd, fall)", msg("dance", "--dir", "d"));
         assertEquals("--dir is required", msg("fall"));
         assertEquals("--type must be 0-4, got 5", msg("fall", "--dir", "d", "--type", "5"));
         assertEquals("--type needs a number, got 'x'", msg("fall", "--dir", "d", "--type", "x"));
