@@ -74,7 +74,7 @@ class LocalizeEvalPerRecordingTest {
         assertEquals(-1, r.recoverCycles());
 
         String row = LocalizeEval.row(r);
-        assertEquals(List.of("SYN", "21", "20", "0.100", "0.190", "2.000", "19.00", "10", "0.200", "0.400", "0.400", "0.714", "1", "0", "-", "2.000", "-"),
+        assertEquals(List.of("SYN", "21", "20", "0.100", "0.190", "2.000", "19.00", "10", "0.200", "0.400", "0.400", "0.714", "1", "0", "-", "2.000", "-", "0", "0.400"),
                 Arrays.asList(row.trim().split("\\s+")), row);
         assertEquals(LocalizeEval.TABLE_HEADER.trim().split("\\s+").length, row.trim().split("\\s+").length, "one column per header");
 
@@ -198,6 +198,37 @@ class LocalizeEvalPerRecordingTest {
         }
     }
 
+    /** Torso at the origin, belief exact; true ball at (tx, 0), believed at (bx, 0); {@code seen}: this line's frame shows the ball. */
+    private static LocalizeEval.Cycle ballAt(int k, double tx, double bx, boolean seen) {
+        GroundTruth.Line g = new GroundTruth.Line(0.02 * k, 0, 0, 0.38, UPRIGHT, 0, tx, 0, 0.04);
+        return new LocalizeEval.Cycle(k, g, false, new Pose2(0, 0, 0), new Vector2(bx, 0), true, seen, seen);
+    }
+
+    /**
+     * A trainer placement: the true ball jumps 3 m at line 6 while the belief keeps the old spot until line 9, whose
+     * frame shows the ball. All 12 lines count for the ball (seen within the last second), so ball_p95 (index
+     * ceil(0.95 * 12) - 1 = 11 of the sorted errors) is 3.0; b95_seen leaves out lines 6-8 and is 0. A second jump
+     * (line 13, 0.5 m: not a jump) and a jump at line 16 never followed by a sighting: left out to the end.
+     */
+    @Test
+    void ballFiguresWithoutThePlacementsByHand() {
+        LocalizeEval.Result r = new LocalizeEval.Result("BALL");
+        for (int k = 1; k <= 5; k++) r.observe(ballAt(k, 0, 0, true));
+        for (int k = 6; k <= 8; k++) r.observe(ballAt(k, 3, 0, false));
+        for (int k = 9; k <= 12; k++) r.observe(ballAt(k, 3, 3, k == 9));
+        assertEquals(1, r.ballJumps());
+        assertEquals(3.0, r.ballP95(), 1e-12);
+        assertEquals(0.0, r.ballP95Seen(), 1e-12);
+        for (int k = 13; k <= 15; k++) r.observe(ballAt(k, 3.5, 3.5, false));
+        for (int k = 16; k <= 40; k++) r.observe(ballAt(k, 8, 3.5, false));
+        assertEquals(2, r.ballJumps(), "0.5 m in a line is not a jump, 4.5 m is");
+        assertEquals(4.5, r.ballP95(), 1e-12);
+        assertEquals(0.0, r.ballP95Seen(), 1e-12, "never seen after the second jump: none of its lines count");
+        String[] row = LocalizeEval.row(r).trim().split("\\s+");
+        assertEquals("2", row[row.length - 2]);
+        assertEquals("0.000", row[row.length - 1]);
+    }
+
     /** Truth at (tx, 0), belief at (bx, 0), heading 0, ball right under the truth. */
     private static LocalizeEval.Cycle at(int k, double tx, double bx) {
         GroundTruth.Line g = new GroundTruth.Line(0.02 * k, tx, 0, 0.38, UPRIGHT, 0, tx, 0, 0.04);
@@ -221,12 +252,12 @@ class LocalizeEvalPerRecordingTest {
         assertEquals(4, r.recoverCycles());
         assertEquals(4, r.selfOver1m());
         String[] row = LocalizeEval.row(r).trim().split("\\s+");
-        assertEquals("2", row[row.length - 4]);
-        assertEquals("4", row[row.length - 3]);
+        assertEquals("2", row[row.length - 6]);
+        assertEquals("4", row[row.length - 5]);
         // Every synthetic cycle carries a vision frame: counted from the move's own line, the same figures.
         assertEquals(4, r.seenRecoverCycles());
         assertEquals(3.0, r.selfMaxSeen(), 1e-9);
-        assertEquals("4", row[row.length - 1]);
+        assertEquals("4", row[row.length - 3]);
 
         LocalizeEval.Result open = new LocalizeEval.Result("OPEN");
         open.observe(at(1, 0, 0));
@@ -271,8 +302,8 @@ class LocalizeEvalPerRecordingTest {
         assertEquals(0.2, one.selfMaxSeen(), 1e-9);
         assertEquals(0, one.seenRecoverCycles());
         String[] row = LocalizeEval.row(one).trim().split("\\s+");
-        assertEquals("0.200", row[row.length - 2]);
-        assertEquals("0", row[row.length - 1]);
+        assertEquals("0.200", row[row.length - 4]);
+        assertEquals("0", row[row.length - 3]);
         LocalizeEval.Result all = LocalizeEval.pooled(List.of(r, one));
         assertEquals(4.0, all.selfMaxSeen(), 1e-9);
         assertEquals(3, all.seenRecoverCycles());

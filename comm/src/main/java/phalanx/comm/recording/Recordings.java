@@ -81,7 +81,9 @@ public final class Recordings {
                 StandardCharsets.ISO_8859_1))) {
             return r.lines().toList();
         } catch (UncheckedIOException e) {
-            throw e.getCause();
+            throw new IOException(file + ": " + e.getCause().getMessage() + " (a truncated or damaged gzip file)", e.getCause());
+        } catch (java.util.zip.ZipException | java.io.EOFException e) {
+            throw new IOException(file + ": " + e.getMessage() + " (a truncated or damaged gzip file)", e);
         }
     }
 
