@@ -184,7 +184,6 @@ public final class Recorder {
         Bot recorded = null;
         int next = 0;
         long lastProgress = System.currentTimeMillis();
-        int picturesAtLastLine = -1;
         while (recorded == null || !recorded.done()) {
             if (next < order.size() && (bots.isEmpty() || bots.get(bots.size() - 1).received() >= 3)) {
                 Pending p = order.get(next++);
@@ -300,7 +299,9 @@ public final class Recorder {
         double now = p == null ? Double.NaN : p.time();
         if (pic == null) {
             tally.noPicture++;
-            gt.write(GroundTruth.format(now, state.time(), state.playMode().wireName(), Double.NaN, Double.NaN, Double.NaN, null,
+            // no picture for this cycle: nothing of it is known, not even the game time (the shared files write nan too;
+            // the last picture's time would be one cycle old, a mismatch with the GS)
+            gt.write(GroundTruth.format(now, Double.NaN, "nan", Double.NaN, Double.NaN, Double.NaN, null,
                     Double.NaN, Double.NaN, Double.NaN) + "\n");
             return;
         }
