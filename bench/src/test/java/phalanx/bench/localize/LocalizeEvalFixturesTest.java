@@ -44,8 +44,8 @@ class LocalizeEvalFixturesTest {
             "walk-head", List.of(List.of("self_p95", "heading_p95", "ball_median", "ball_p95"), List.of("heading_p95")),
             "walk-head-right", List.of(List.of("self_p95", "heading_p95", "ball_median", "ball_p95"), List.of("self_p95", "heading_p95")),
             "turn-head", List.of(List.of("heading_p95", "ball_median", "ball_p95"), List.of("heading_p95", "ball_p95")),
-            "ball-roll", List.of(List.of("ball_p95"), List.of("ball_p95")),
-            "ball-roll-right", List.of(List.of("ball_p95"), List.of("ball_p95")),
+            "ball-roll", List.of(List.of(), List.of()),
+            "ball-roll-right", List.of(List.of(), List.of()),
             "crowd", List.of(List.of("heading_p95", "ball_p95"), List.of()),
             "fall", List.of(List.of("heading_p95", "ball_p95"), List.of()),
             "fall-right", List.of(List.of("heading_p95", "ball_p95"), List.of())));
