@@ -104,6 +104,8 @@ public final class LocalizeEval {
         /** The same from the first vision frame after each move on (-1: none); waiting: a move without a frame yet. */
         int seenRecoverMax = -1, seenRecovering = -1;
         boolean waiting;
+        /** The replay fed the recording's odometry (a single recording's result). */
+        boolean odometry;
         /** A ball jump (trainer or referee placement) not yet followed by a vision frame that shows the ball. */
         boolean ballWaiting;
         long ballJumps;
@@ -278,7 +280,14 @@ public final class LocalizeEval {
     }
 
     /** Replays one recording (path prefix) with the given config. */
-    public static Result run(Path prefix, LocalizationConfig config) throws IOException {
+    public static Result run(Path prefix, LocalizationConfig config) throws IOException { return run(prefix, config, true); }
+
+    /**
+     * Replays one recording; with {@code useOdometry} and an {@code X_odometry.txt(.gz)} beside it (the project's
+     * recordings have one: the walk's commanded motion per cycle), each cycle's odometry is passed to
+     * {@code BeliefStore.odometry} after its update, as the agent does; without, the belief moves only with vision.
+     */
+    public static Result run(Path prefix, LocalizationConfig config, boolean useOdometry) throws IOException {
         List<String> perceptors = Recordings.perceptorMessages(prefix);
         List<GroundTruth.Line> truth = GroundTruth.read(Recordings.groundTruthFile(prefix));
         int type = 0;
@@ -298,9 +307,11 @@ public final class LocalizeEval {
                     + " ground-truth lines (" + Recordings.perceptorFile(prefix) + ", " + Recordings.groundTruthFile(prefix)
                     + "); one ground-truth line per perceptor line is the format, so one of them is truncated");
         }
+        double[][] odometry = useOdometry ? odometry(prefix, perceptors.size()) : null;
         BeliefStore store = new BeliefStore(FieldSpec.V066, config, NaoModel.ofType(type), team, null, 0);
         PerceptionParser parser = new PerceptionParser();
         Result r = new Result(prefix.getFileName().toString());
+        r.odometry = odometry != null;
         int n = perceptors.size();
         double ballSeenAt = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < n; i++) {
@@ -310,9 +321,11 @@ public final class LocalizeEval {
                 p = parser.parse(perceptors.get(i));
             } catch (MalformedMessageException ex) {
                 r.malformed++;
+                if (odometry != null) store.odometry(odometry[i][0], odometry[i][1], odometry[i][2]);
                 continue;
             }
             WorldBelief b = store.update(p);
+            if (odometry != null) store.odometry(odometry[i][0], odometry[i][1], odometry[i][2]);
             GroundTruth.Line g = truth.get(i);
             double now = Double.isFinite(p.time()) ? p.time() : g.now();
             if (p.hasVision() && p.vision().ball() != null) ballSeenAt = now;
@@ -326,6 +339,33 @@ public final class LocalizeEval {
         r.fixes = store.stats().selfFixes();
         r.stats.add(store.stats());
         return r;
+    }
+
+    /**
+     * The recording's odometry file, one {@code forward left turnDeg} line per perceptor line after {@code #} lines;
+     * null when it has none. A file of another length, or a bad line, is an IOException naming it.
+     */
+    static double[][] odometry(Path prefix, int lines) throws IOException {
+        Path f = Recordings.odometryFile(prefix);
+        if (!Files.isRegularFile(f)) return null;
+        List<double[]> out = new ArrayList<>();
+        int n = 0;
+        for (String s : Recordings.lines(f)) {
+            n++;
+            if (s.isBlank() || s.startsWith("#")) continue;
+            String[] v = s.trim().split("\\s+");
+            if (v.length != 3) throw new IOException(f + ":" + n + ": expected 3 fields (forward left turn_deg), found " + v.length);
+            try {
+                out.add(new double[] {Double.parseDouble(v[0]), Double.parseDouble(v[1]), Double.parseDouble(v[2])});
+            } catch (NumberFormatException e) {
+                throw new IOException(f + ":" + n + ": not a number: " + e.getMessage());
+            }
+        }
+        if (out.size() != lines) {
+            throw new IOException(prefix.getFileName() + ": " + lines + " perceptor lines but " + out.size() + " odometry lines ("
+                    + f + "); one odometry line per perceptor line is the format, so one of them is truncated");
+        }
+        return out.toArray(new double[0][]);
     }
 
     /** A pose in the team's own frame, in the field frame (right side: turned by 180°). */
@@ -349,7 +389,7 @@ public final class LocalizeEval {
     /** The command line; returns the exit status. */
     public static int run(String[] args, PrintStream out, PrintStream err) {
         LocalizationConfig config = LocalizationConfig.DEFAULT;
-        boolean compare = false, tsv = false, detail = false, oneFilter = false;
+        boolean compare = false, tsv = false, detail = false, oneFilter = false, useOdometry = true;
         int worst = 0;
         List<Path> recordings = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
@@ -373,6 +413,7 @@ public final class LocalizeEval {
                     if (worst < 0) return usage(err, "--worst needs a number of cycles >= 0, not '" + args[i] + "'");
                 }
                 case "--compare" -> compare = true;
+                case "--no-odometry" -> useOdometry = false;
                 case "--all" -> {
                     Path own = projectRecordings();
                     try {
@@ -410,7 +451,7 @@ public final class LocalizeEval {
                 for (LocalizationConfig.Filter f : LocalizationConfig.Filter.values()) {
                     for (LocalizationConfig.PairWeighting w : LocalizationConfig.PairWeighting.values()) {
                         LocalizationConfig c = config.withFilter(f).withPairWeighting(w);
-                        Result all = pooled(runEach(recordings, c, skipped, err));
+                        Result all = pooled(runEach(recordings, c, useOdometry, skipped, err));
                         out.printf(Locale.ROOT, "%-9s %-9s %8.3f  %8.3f  %8.3f  %9.2f  %9.2f  %8.3f  %8.3f  %8.3f%n",
                                 f.name().toLowerCase(Locale.ROOT), w.name().toLowerCase(Locale.ROOT),
                                 all.selfMedian(), all.selfP95(), all.selfMax(), all.thetaMedian(), all.thetaP95(),
@@ -429,7 +470,7 @@ public final class LocalizeEval {
             Result def = null;
             for (LocalizationConfig.Filter f : filters) {
                 LocalizationConfig c = config.withFilter(f);
-                List<Result> each = runEach(recordings, c, skipped, err);
+                List<Result> each = runEach(recordings, c, useOdometry, skipped, err);
                 Result all = pooled(each);
                 if (f == config.filter()) def = all;
                 String label = f.name().toLowerCase(Locale.ROOT) + "/" + c.pairWeighting().name().toLowerCase(Locale.ROOT);
@@ -438,6 +479,9 @@ public final class LocalizeEval {
                     out.println(tsvRow(label, all));
                     continue;
                 }
+                List<String> withOdometry = each.stream().filter(x -> x.odometry).map(Result::name).toList();
+                if (!withOdometry.isEmpty()) out.println("(the walk's odometry fed after each update, as the agent does, on: "
+                        + String.join(", ", withOdometry) + "; --no-odometry replays them without)");
                 table(out, label, each, all, Limits.ISSUE_19, worst);
                 if (detail) for (Result r : each) detail(out, r);
             }
@@ -500,12 +544,12 @@ public final class LocalizeEval {
      * The same, but a recording that cannot be read (truncated, bad line) is left out with a message on {@code err}
      * (once, the first time) and its name added to {@code skipped}; the others are measured.
      */
-    static List<Result> runEach(List<Path> recordings, LocalizationConfig config, List<String> skipped, PrintStream err) {
+    static List<Result> runEach(List<Path> recordings, LocalizationConfig config, boolean useOdometry, List<String> skipped, PrintStream err) {
         List<Result> out = new ArrayList<>();
         for (Path p : recordings) {
             String name = p.getFileName().toString();
             try {
-                out.add(run(p, config));
+                out.add(run(p, config, useOdometry));
             } catch (IOException | RuntimeException e) {
                 if (!skipped.contains(name)) {
                     skipped.add(name);
@@ -621,8 +665,9 @@ public final class LocalizeEval {
 
     private static int usage(PrintStream s, String problem) {
         if (problem != null) s.println("localize-eval: " + problem);
-        s.println("usage: scripts/phalanx bench localize [--filter fifo|ekf] [--pairs equal|geometry] [--worst N] [--tsv] [--detail] [--compare] [--all] <recording>...");
+        s.println("usage: scripts/phalanx bench localize [--filter fifo|ekf] [--pairs equal|geometry] [--worst N] [--tsv] [--detail] [--compare] [--all] [--no-odometry] <recording>...");
         s.println("  a recording is a path prefix such as ../shared/recordings/S1 (needs X_perceptors.txt and X_groundtruth.txt, either may be .gz)");
+        s.println("  X_odometry.txt(.gz), where a recording has one, is fed to the belief store after each update; --no-odometry: not");
         s.println("  --all: every recording with ground truth in the project's recordings/ and in ../shared/recordings (when it is there)");
         s.println("  default: one block per filter (fifo, ekf): a line per recording, the pooled line, the recordings that break");
         s.println("  issue 19's limits; --filter runs one; --worst N prints the N worst cycles of each breaking recording;");

@@ -17,6 +17,7 @@ import phalanx.motion.control.MotionController;
 import phalanx.motion.control.MotionRequest;
 import phalanx.motion.walk.WalkConfig;
 import phalanx.motion.walk.WalkController;
+import phalanx.motion.walk.Odometry;
 import phalanx.motion.walk.WalkVelocity;
 
 import java.io.IOException;
@@ -46,6 +47,7 @@ final class Bot {
     private String getUp;
     private String text;
     private Perception last;
+    private Odometry odometry = Odometry.NONE;
 
     private Bot(String team, int unum, int type, Side side, Plan plan, ServerConnection conn, MotionLibrary library) {
         this.team = team;
@@ -109,6 +111,7 @@ final class Bot {
 
     private String compose() {
         out.reset();
+        odometry = Odometry.NONE;
         if (received == 1) return EffectorMessage.init(unum, team);
         if (received == 2) {
             return out.beam(plan.beamX(), plan.beamY(), plan.beamDeg()).syn().text().toString(); // own frame, as the server takes it
@@ -127,6 +130,7 @@ final class Bot {
             case WALK -> {
                 if (walk == null) walk = new WalkController(WalkConfig.forType(type), type, MotionConfig.DEFAULT);
                 walk.step(j, last == null ? null : last.gyro(), acc, s.walk()).appendTo(out, yaw, pitch);
+                odometry = walk.odometry();
             }
             case STAND -> standStill(j, acc, now).appendTo(out, yaw, pitch);
             case TIP -> {
@@ -150,7 +154,11 @@ final class Bot {
 
     /** After a walk, the walk standing (it keeps its crouch); else the motion controller idle: every joint held. */
     private JointVelocities standStill(JointAngles j, Vector3 acc, double now) {
-        if (walk != null) return walk.step(j, last.gyro(), acc, WalkVelocity.ZERO);
+        if (walk != null) {
+            JointVelocities v = walk.step(j, last.gyro(), acc, WalkVelocity.ZERO);
+            odometry = walk.odometry();
+            return v;
+        }
         return motions.step(now, j, acc, MotionRequest.NONE);
     }
 
@@ -162,6 +170,12 @@ final class Bot {
             inStep = 0;
         }
     }
+
+    /**
+     * The walk's own motion in the cycle of the last reply, as commanded ({@code WalkController.odometry}), what the
+     * agent passes to {@code BeliefStore.odometry} after each update; none outside the walk.
+     */
+    Odometry odometry() { return odometry; }
 
     /** The get-up motion the last GETUP step played (null before one). */
     String getUpPlayed() { return getUp; }

@@ -9,6 +9,7 @@ import phalanx.comm.recording.GroundTruth;
 import phalanx.comm.wire.ServerConnection;
 import phalanx.match.ServerProcess;
 import phalanx.motion.MotionLibrary;
+import phalanx.motion.walk.Odometry;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
@@ -42,7 +43,13 @@ public final class Recorder {
               SCENARIO: walk-head, turn-head, ball-roll, crowd, fall (bench/README.md "The recorder")
               starts its own rcssserver3d ($RCSSSERVER3D or rcssserver3d on PATH; agent port P, default the first
               free pair from 4600 to 4799, monitor P+200), stages the scenario and writes DIR/X_{perceptors,effectors,groundtruth}.txt.gz
-              and DIR/X_trainer.txt (X defaults to the scenario's name; the server's log goes to DIR/X-server/).""";
+              DIR/X_odometry.txt.gz and DIR/X_trainer.txt (X defaults to the scenario's name; the server's log goes to DIR/X-server/).""";
+
+    /**
+     * The first line of {@code X_odometry.txt.gz} (not in the shared format): then one line per perceptor line, the
+     * walk's own motion in the cycle of the reply to that line, as the agent passes it to {@code BeliefStore.odometry}.
+     */
+    static final String ODOMETRY_HEADER = "# forward_m left_m turn_deg: the walk's commanded motion in the cycle of the reply to perceptor line i (BeliefStore.odometry after update i); 0 0 0 outside the walk";
 
     /** The monitor port is the agent port + 200: agent ports 4600-4799, monitor ports 4800-4999 (games use 3100-3700). */
     static final int MONITOR_OFFSET = 200;
@@ -141,10 +148,12 @@ public final class Recorder {
              Writer per = gz(o.dir().resolve(o.name() + "_perceptors.txt.gz"));
              Writer eff = gz(o.dir().resolve(o.name() + "_effectors.txt.gz"));
              Writer gt = gz(o.dir().resolve(o.name() + "_groundtruth.txt.gz"));
+             Writer odo = gz(o.dir().resolve(o.name() + "_odometry.txt.gz"));
              Writer tr = Files.newBufferedWriter(o.dir().resolve(o.name() + "_trainer.txt"), StandardCharsets.US_ASCII)) {
             gt.write(GroundTruth.HEADER + "\n");
+            odo.write(ODOMETRY_HEADER + "\n");
             tr.write("# now_of_last_perceptor_message_received  trainer_command_sent_on_monitor_port\n");
-            Tally tally = record(o, sc, type, root, port, mon, bots, per, eff, gt, tr);
+            Tally tally = record(o, sc, type, root, port, mon, bots, per, eff, gt, odo, tr);
             System.out.printf(Locale.ROOT, "record %s: %s, type %d, %s side, %d lines; game clock running on %d lines, %d where the GS time and the"
                             + " monitor's differ%s; %d lines without a monitor picture (torso nan), %d pictures more than one a cycle; %d malformed messages%n",
                     o.name(), sc.name(), type, o.right() ? "right" : "left", tally.lines, tally.clockLines, tally.clockMismatches,
@@ -165,7 +174,7 @@ public final class Recorder {
     }
 
     private static Tally record(Options o, Scenario sc, int type, Path root, int port, ServerConnection mon, List<Bot> bots,
-                                Writer per, Writer eff, Writer gt, Writer tr) throws IOException {
+                                Writer per, Writer eff, Writer gt, Writer odo, Writer tr) throws IOException {
         Map<Integer, MotionLibrary> libraries = new HashMap<>();
         Side recSide = o.right() ? Side.RIGHT : Side.LEFT, otherSide = o.right() ? Side.LEFT : Side.RIGHT;
         // the team that connects first takes the left (recordings README, S6); one robot at a time, each once the
@@ -233,6 +242,8 @@ public final class Recorder {
                             // replies to the message before): wait for it, so that the next line gets its own picture
                             picture = drain(mon, scene, header, recorded, PICTURE_WAIT_MILLIS, tally);
                             eff.write(b.reply() + "\n");
+                            Odometry d = b.odometry();
+                            odo.write(String.format(Locale.ROOT, "%.5f %.5f %.4f%n", d.forward(), d.left(), d.turnDeg()));
                         } else {
                             b.reply();
                         }

@@ -68,6 +68,8 @@ public final class Recordings {
     public static Path perceptorFile(Path prefix) { return sibling(prefix, "_perceptors.txt"); }
     public static Path effectorFile(Path prefix) { return sibling(prefix, "_effectors.txt"); }
     public static Path groundTruthFile(Path prefix) { return sibling(prefix, "_groundtruth.txt"); }
+    /** The walk's odometry per perceptor line (the project's own recordings only; not in the shared format). */
+    public static Path odometryFile(Path prefix) { return sibling(prefix, "_odometry.txt"); }
 
     /** The perceptor messages, one per line, exactly as the server sent them. */
     public static List<String> perceptorMessages(Path prefix) throws IOException {
