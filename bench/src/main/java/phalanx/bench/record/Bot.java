@@ -149,8 +149,12 @@ final class Bot {
             }
         }
         advance(s);
+        if (down(acc)) odometry = Odometry.NONE;
         return out.syn().text().toString();
     }
+
+    /** The torso leans more than 45° (ACC's up component below g·cos 45°): the plan's walk then moves nothing, and the agent would not walk. */
+    static boolean down(Vector3 acc) { return acc != null && acc.z() < 9.81 * Math.cos(Math.toRadians(45)); }
 
     /** After a walk, the walk standing (it keeps its crouch); else the motion controller idle: every joint held. */
     private JointVelocities standStill(JointAngles j, Vector3 acc, double now) {
@@ -173,7 +177,8 @@ final class Bot {
 
     /**
      * The walk's own motion in the cycle of the last reply, as commanded ({@code WalkController.odometry}), what the
-     * agent passes to {@code BeliefStore.odometry} after each update; none outside the walk.
+     * agent passes to {@code BeliefStore.odometry} after each update; none outside the walk, and none while the robot is
+     * down ({@link #down}): a plan's walk may go on while the robot lies, the agent's would not.
      */
     Odometry odometry() { return odometry; }
 

@@ -41,6 +41,17 @@ class LocalizeEvalFixturesTest {
 
     /** name → the limits broken with {FIFO, EKF}, as `scripts/phalanx bench localize --all` printed them (recordings/README.md). */
     static final Map<String, List<List<String>>> BROKEN = new TreeMap<>(Map.of(
+            "walk-head", List.of(List.of(), List.of()),
+            "walk-head-right", List.of(List.of("ball_median"), List.of()),
+            "turn-head", List.of(List.of("ball_median", "ball_p95"), List.of("ball_p95")),
+            "ball-roll", List.of(List.of(), List.of()),
+            "ball-roll-right", List.of(List.of(), List.of()),
+            "crowd", List.of(List.of(), List.of()),
+            "fall", List.of(List.of(), List.of()),
+            "fall-right", List.of(List.of(), List.of())));
+
+    /** The same without the walk's odometry (`bench localize --all --no-odometry`): what vision alone gives. */
+    static final Map<String, List<List<String>>> BROKEN_WITHOUT_ODOMETRY = new TreeMap<>(Map.of(
             "walk-head", List.of(List.of("self_p95", "heading_p95", "ball_median", "ball_p95"), List.of("heading_p95")),
             "walk-head-right", List.of(List.of("self_p95", "heading_p95", "ball_median", "ball_p95"), List.of("self_p95", "heading_p95")),
             "turn-head", List.of(List.of("heading_p95", "ball_median", "ball_p95"), List.of("heading_p95", "ball_p95")),
@@ -58,7 +69,7 @@ class LocalizeEvalFixturesTest {
                 "the recordings in " + DIR.toAbsolutePath() + " are the ones listed here");
         for (String name : BROKEN.keySet()) {
             Path p = DIR.resolve(name);
-            for (Path f : List.of(Recordings.perceptorFile(p), Recordings.groundTruthFile(p), Recordings.effectorFile(p))) {
+            for (Path f : List.of(Recordings.perceptorFile(p), Recordings.groundTruthFile(p), Recordings.effectorFile(p), Recordings.odometryFile(p))) {
                 assertTrue(f.getFileName().toString().endsWith(".gz") && Files.isRegularFile(f), "missing " + f);
             }
             assertTrue(Files.isRegularFile(DIR.resolve(name + "_trainer.txt")), name + "_trainer.txt");
@@ -144,14 +155,23 @@ class LocalizeEvalFixturesTest {
 
     @Test
     void theLimitsHoldExceptTheOnesListed() throws IOException {
+        limits(BROKEN, true);
+    }
+
+    @Test
+    void withoutOdometryTheLimitsHoldExceptTheOnesListed() throws IOException {
+        limits(BROKEN_WITHOUT_ODOMETRY, false);
+    }
+
+    private static void limits(Map<String, List<List<String>>> listed, boolean odometry) throws IOException {
         LocalizationConfig.Filter[] filters = {LocalizationConfig.Filter.FIFO, LocalizationConfig.Filter.EKF};
         List<String> wrong = new ArrayList<>();
-        for (Map.Entry<String, List<List<String>>> e : BROKEN.entrySet()) {
+        for (Map.Entry<String, List<List<String>>> e : listed.entrySet()) {
             for (int f = 0; f < filters.length; f++) {
-                LocalizeEval.Result r = LocalizeEval.run(DIR.resolve(e.getKey()), LocalizationConfig.DEFAULT.withFilter(filters[f]));
+                LocalizeEval.Result r = LocalizeEval.run(DIR.resolve(e.getKey()), LocalizationConfig.DEFAULT.withFilter(filters[f]), odometry);
                 List<String> broken = LocalizeEval.Limits.ISSUE_19.broken(r);
                 if (!broken.equals(e.getValue().get(f))) {
-                    wrong.add(e.getKey() + " " + filters[f] + ": listed " + e.getValue().get(f) + ", measured " + broken
+                    wrong.add(e.getKey() + " " + filters[f] + (odometry ? "" : " without odometry") + ": listed " + e.getValue().get(f) + ", measured " + broken
                             + " (" + LocalizeEval.Limits.ISSUE_19.describe(r) + ")");
                 }
                 // none has a move of the robot (a referee or trainer move would be one); no upright cycle is 1 m off
@@ -254,7 +274,41 @@ class LocalizeEvalFixturesTest {
         Files.delete(tmp.resolve("cut_groundtruth.txt.gz"));
         Files.write(tmp.resolve("cut_groundtruth.txt"), lines.subList(0, 500));
         Files.copy(DIR.resolve("fall_perceptors.txt.gz"), tmp.resolve("cut_perceptors.txt.gz"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        int n = Recordings.perceptorMessages(DIR.resolve("fall")).size();
         IOException x = assertThrows(IOException.class, () -> LocalizeEval.run(tmp.resolve("cut"), LocalizationConfig.DEFAULT));
-        assertTrue(x.getMessage().contains("1150 perceptor lines but 499 ground-truth lines"), x.getMessage());
+        assertTrue(x.getMessage().contains(n + " perceptor lines but 499 ground-truth lines"), x.getMessage());
+
+        // an odometry file that stops early, or has a bad line: named; --no-odometry does not read it
+        Files.write(tmp.resolve("cut_groundtruth.txt"), lines);
+        Files.writeString(tmp.resolve("cut_odometry.txt"), "# forward left turn\n0.01 0 0\n0.01 0 0\n");
+        x = assertThrows(IOException.class, () -> LocalizeEval.run(tmp.resolve("cut"), LocalizationConfig.DEFAULT));
+        assertTrue(x.getMessage().contains(n + " perceptor lines but 2 odometry lines"), x.getMessage());
+        Files.writeString(tmp.resolve("cut_odometry.txt"), "0.01 0\n");
+        x = assertThrows(IOException.class, () -> LocalizeEval.run(tmp.resolve("cut"), LocalizationConfig.DEFAULT));
+        assertTrue(x.getMessage().contains("cut_odometry.txt:1: expected 3 fields"), x.getMessage());
+        assertEquals(n, LocalizeEval.run(tmp.resolve("cut"), LocalizationConfig.DEFAULT, false).cycles());
+    }
+
+    /**
+     * The recordings carry the walk's odometry (one line per perceptor line), the replay feeds it as the agent does:
+     * it is non-zero while walking and turning, and it changes the figures of a walking recording.
+     */
+    @Test
+    void theWalksOdometryIsThereAndIsUsed() throws IOException {
+        for (String name : BROKEN.keySet()) {
+            double[][] odo = LocalizeEval.odometry(DIR.resolve(name), Recordings.perceptorMessages(DIR.resolve(name)).size());
+            assertNotNull(odo, name);
+            double forward = 0, turn = 0;
+            for (double[] o : odo) {
+                forward += Math.abs(o[0]);
+                turn += Math.abs(o[2]);
+            }
+            if (name.startsWith("walk-head")) assertTrue(forward > 2 && turn > 150, name + ": forward " + forward + " m, turn " + turn + " deg");
+            if (name.startsWith("turn-head")) assertTrue(turn > 500, name + ": turn " + turn + " deg");
+            if (name.startsWith("ball-roll")) assertEquals(0, forward + turn, 1e-12, name + " stands");
+        }
+        LocalizationConfig fifo = LocalizationConfig.DEFAULT.withFilter(LocalizationConfig.Filter.FIFO);
+        LocalizeEval.Result with = LocalizeEval.run(DIR.resolve("turn-head"), fifo), without = LocalizeEval.run(DIR.resolve("turn-head"), fifo, false);
+        assertNotEquals(with.thetaP95(), without.thetaP95(), "odometry changes the heading figures while turning");
     }
 }
