@@ -71,6 +71,8 @@ public final class GameStats {
         /** This team's kick-offs, and those of them the other side got a free kick from (docs/protocol.md, "Set pieces"). */
         public int kickOffs, kickOffFouls;
         public double possessionS, ownThirdS, middleS, opponentThirdS, lyingS;
+        /** Contests (see {@link GameStats#contests()}) this team moved the ball out of first. */
+        public int contestsWon;
         /** Set pieces awarded to this team, by play mode (free kicks count the other side's fouls). */
         public final Map<String, Integer> setPieces = new HashMap<>();
 
@@ -92,6 +94,10 @@ public final class GameStats {
     private double kickOffPlayOnAt = Double.NaN;
     private double playOnS;
     private long messages, unreadable;
+    private double contestStart = Double.NaN;                     // the contest going on since, or NaN
+    private boolean contestOpen;                                  // the last contest ended and nobody kicked since
+    private int contests;
+    private double contestS;
     final double[][] ballCells = new double[30][20];              // PlayOn seconds per 1 m cell, for the heat map
 
     private record Kick(Side team, double t0, double x0, double y0, double dx, double dy, Defence defence) {}
@@ -138,6 +144,12 @@ public final class GameStats {
     private final double[][] namedAt = new double[2][12];
     /** A foul the server named this long before the player was held up is the one he is held for. */
     static final double NAMED_WITHIN_S = 1.0;
+    /** A contest: in PlayOn the ball under this speed (m/s) ... */
+    static final double CONTEST_STILL_SPEED = 0.1;
+    /** ... with an upright player of each team within this of it (m) ... */
+    static final double CONTEST_RANGE = 1.0;
+    /** ... for at least this long (s). Its winner is the team that kicks the ball next, before the play mode changes. */
+    static final double CONTEST_MIN_S = 1.0;
 
     private final java.util.List<Foul> foulEvents = new java.util.ArrayList<>();
     private final double[][] lastZ = new double[2][12];
@@ -161,6 +173,16 @@ public final class GameStats {
 
     public TeamStats team(Side side) { return teams.get(side); }
     public double playOnSeconds() { return playOnS; }
+
+    /**
+     * Still balls fought over: in PlayOn the ball (nearly) still for at least CONTEST_MIN_S with an upright player of
+     * each team within CONTEST_RANGE of it (issue 18: against UT Austin Villa a third of the game goes so). Each
+     * team's {@link TeamStats#contestsWon} counts those it moved the ball out of with the next kick.
+     */
+    public int contests() { return contests; }
+
+    /** Game seconds the ball lay in such contests. */
+    public double contestSeconds() { return contestS; }
     public long messages() { return messages; }
     public long unreadable() { return unreadable; }
     public MatchState state() { return state; }
@@ -197,6 +219,8 @@ public final class GameStats {
         endKick(lastBall);
         PlayMode before = lastMode;
         lastMode = mode;
+        endContest(t);
+        contestOpen = false;                              // a set piece, not a contest, moves the ball next
         Side owner = mode.owner();
         if (isKickOff(mode) && owner != null) teams.get(owner).kickOffs++;
         if (mode == PlayMode.PLAY_ON && isKickOff(before)) {
@@ -251,6 +275,7 @@ public final class GameStats {
         boolean beamsAllowed = mode.allowsBeam();
         double bestD = Double.POSITIVE_INFINITY;
         Side nearest = null;
+        boolean[] atBall = new boolean[2];
         for (Side side : Side.values()) {
             TeamStats ts = teams.get(side);
             for (int u = 1; u <= players; u++) {
@@ -270,6 +295,7 @@ public final class GameStats {
                 lastTorso[side.ordinal()][u] = new double[] {p.x(), p.y(), p.upZ()};
                 double d = Math.hypot(p.x() - ball[0], p.y() - ball[1]);
                 if (d < bestD) { bestD = d; nearest = side; }
+                if (!lying && d <= CONTEST_RANGE) atBall[side.ordinal()] = true;
             }
         }
         if (playOn) {
@@ -285,10 +311,19 @@ public final class GameStats {
         }
         if (lastBall == null) return;
         double speed = Math.hypot(ball[0] - lastBall[0], ball[1] - lastBall[1]) / dt;
+        double now = state.time();
+        if (playOn && speed < CONTEST_STILL_SPEED && atBall[0] && atBall[1]) {
+            if (Double.isNaN(contestStart)) contestStart = now;
+        } else {
+            endContest(now);
+        }
         if (speed > TELEPORT_SPEED) {
             kick = null;                                  // placed, not kicked
+            contestOpen = false;
         } else if (kick == null && lastBallSpeed < REST_SPEED && speed > KICK_SPEED) {
             Side kicker = kicker(lastBall);
+            if (kicker != null && contestOpen) teams.get(kicker).contestsWon++;
+            if (kicker != null) contestOpen = false;
             if (kicker != null) kick = new Kick(kicker, lastTime, lastBall[0], lastBall[1], ball[0] - lastBall[0], ball[1] - lastBall[1],
                     defence(kicker == Side.LEFT ? Side.RIGHT : Side.LEFT, lastBall));
         } else if (kick != null && speed < STOP_SPEED) {
@@ -367,6 +402,17 @@ public final class GameStats {
         return team;
     }
 
+    /** The contest going on, if any, ends now: counted when it lasted CONTEST_MIN_S, and open until the next kick. */
+    private void endContest(double t) {
+        if (Double.isNaN(contestStart)) return;
+        if (t - contestStart >= CONTEST_MIN_S) {
+            contests++;
+            contestS += t - contestStart;
+            contestOpen = true;
+        }
+        contestStart = Double.NaN;
+    }
+
     private void endKick(double[] end) {
         Kick k = kick;
         kick = null;
@@ -393,13 +439,14 @@ public final class GameStats {
         return String.format(Locale.ROOT, "game-stats side=%s team=%s goals=%d shots_on_goal=%d kicks=%d kicks_over_8m=%d"
                         + " kicks_under_1_5m=%d possession=%.3f ball_own_third=%.3f ball_middle=%.3f ball_opponent_third=%.3f"
                         + " falls=%d lying_s=%.1f relocated=%d free_kicks=%d direct_free_kicks=%d kick_ins=%d corners=%d"
-                        + " goal_kicks=%d offsides=%d kick_offs=%d kick_off_fouls=%d play_on_s=%.1f"
+                        + " goal_kicks=%d offsides=%d kick_offs=%d kick_off_fouls=%d play_on_s=%.1f contests=%d contests_won=%d contest_s=%.1f"
                         + " fouls_charging=%d fouls_touching=%d fouls_contact=%d fouls_incapable=%d fouls_illegal_defence=%d"
                         + " fouls_other=%d self_collisions=%d",
                 side == Side.LEFT ? "left" : "right", t.name == null ? "?" : t.name, t.goals, t.shotsOnGoal, t.kicks,
                 t.kicksOver8m, t.kicksUnder1_5m, t.possessionS / p, t.ownThirdS / p, t.middleS / p, t.opponentThirdS / p,
                 t.falls, t.lyingS, t.relocated, t.setPiece("free_kick"), t.setPiece("direct_free_kick"), t.setPiece("kick_in"),
                 t.setPiece("corner"), t.setPiece("goal_kick"), t.setPiece("offside"), t.kickOffs, t.kickOffFouls, playOnS,
+                contests, t.contestsWon, contestS,
                 t.fouls(Foul.Kind.CHARGING), t.fouls(Foul.Kind.TOUCHING), t.fouls(Foul.Kind.CONTACT), t.fouls(Foul.Kind.INCAPABLE),
                 t.fouls(Foul.Kind.ILLEGAL_DEFENCE), t.fouls(Foul.Kind.CROWDING) + t.fouls(Foul.Kind.ILLEGAL_ATTACK) + t.fouls(Foul.Kind.KICK_OFF),
                 t.selfCollisions);

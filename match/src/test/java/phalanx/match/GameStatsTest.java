@@ -191,6 +191,38 @@ class GameStatsTest {
     }
 
     @Test
+    void aStillBallWithAPlayerOfEachTeamAtItIsAContestWonByTheTeamThatKicksItNext() {
+        GameStats g = new GameStats(11);
+        double t = 0;
+        // 0.6 s: left 2 and right 5 at a still ball, too short for a contest; then right 5 lies down for 1 s: none either
+        for (int i = 0; i < 15; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 0, 0, new double[] {0, 2, -0.5, 0, 0.38, 0}, new double[] {1, 5, 0.4, 0, 0.38, 0}));
+        for (int i = 0; i < 25; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 0, 0, new double[] {0, 2, -0.5, 0, 0.38, 0}, new double[] {1, 5, 0.4, 0, 0.38, 1}));
+        assertEquals(0, g.contests(), "0.6 s, then one of them lying");
+        // 1.6 s with both up at the still ball: a contest ...
+        for (int i = 0; i < 40; i++, t += 0.04) g.accept(robots(t, PLAY_ON, 0, 0, new double[] {0, 2, -0.5, 0, 0.38, 0}, new double[] {1, 5, 0.4, 0, 0.38, 0}));
+        // ... that right 5 (the nearer) ends with a kick toward -x at 4 m/s
+        double x = 0;
+        for (int i = 0; i < 20; i++, t += 0.04) { x -= 0.16; g.accept(robots(t, PLAY_ON, x, 0, new double[] {0, 2, -0.5, 0, 0.38, 0}, new double[] {1, 5, 0.4, 0, 0.38, 0})); }
+        for (int i = 0; i < 5; i++, t += 0.04) g.accept(robots(t, PLAY_ON, x, 0, new double[] {0, 2, -0.5, 0, 0.38, 0}, new double[] {1, 5, 0.4, 0, 0.38, 0}));
+        assertEquals(1, g.contests(), g.line(Side.LEFT));
+        assertEquals(1.6, g.contestSeconds(), 0.05);
+        assertEquals(1, g.team(Side.RIGHT).contestsWon);
+        assertEquals(0, g.team(Side.LEFT).contestsWon);
+        assertTrue(g.line(Side.RIGHT).contains(" contests=1 contests_won=1 contest_s=1.6 "), g.line(Side.RIGHT));
+        assertTrue(g.line(Side.LEFT).contains(" contests=1 contests_won=0 "), g.line(Side.LEFT));
+        // Another contest ended by a free kick: nobody wins it, whoever kicks after the set piece.
+        for (int i = 0; i < 40; i++, t += 0.04) g.accept(robots(t, PLAY_ON, x, 0, new double[] {0, 2, x - 0.3, 0, 0.38, 0}, new double[] {1, 5, x + 0.4, 0, 0.38, 0}));
+        g.accept(robots(t, FREE_KICK_LEFT, x, 0, new double[] {0, 2, x - 0.3, 0, 0.38, 0}, new double[] {1, 5, x + 0.4, 0, 0.38, 0}));
+        t += 0.04;
+        double from = x;
+        for (int i = 0; i < 10; i++, t += 0.04) { x += 0.16; g.accept(robots(t, PLAY_ON, x, 0, new double[] {0, 2, from - 0.3, 0, 0.38, 0})); }
+        for (int i = 0; i < 5; i++, t += 0.04) g.accept(robots(t, PLAY_ON, x, 0, new double[] {0, 2, from - 0.3, 0, 0.38, 0}));
+        assertEquals(1, g.team(Side.LEFT).kicks, "the left team took the free kick");
+        assertEquals(2, g.contests());
+        assertEquals(0, g.team(Side.LEFT).contestsWon, "the free kick, not the contest, gave the left team the ball");
+    }
+
+    @Test
     void aPlayerHeldUpByTheRefereeIsAFoulOfTheKindThePictureBeforeShows() {
         GameStats g = new GameStats(11);
         double t = 0;
