@@ -71,6 +71,16 @@ package phalanx.localization;
  * @param ballMissViewDeg      half-angle of the view cone (horizontal and vertical, from the camera's axis) inside which
  *                             a ball must be seen: the server's is 60° (120° x 120°, docs/protocol.md), less a margin
  *                             for the head's motion within a cycle and the torso tilt's error; not in the thesis
+ * @param fifoFixSigmaMetres   the FIFO filter's motion weighting (issue 19, not in the thesis; NaN odometryErrorShare: off,
+ *                             Algorithm 1's plain mean): the position noise of one pair fix, rms 0.04-0.05 m standing
+ *                             (S1, turn-head, crowd, ball-roll; 0.10 m walking in walk-head) against the true torso
+ * @param fifoFixSigmaDeg      the same for the heading: rms 0.14-0.22° over those recordings
+ * @param odometryErrorShare   how far the walk's odometry is off, as a share of the motion it reports: turn-head commands
+ *                             1.20°/cycle where the robot turns 1.10 (960° commanded, 855° turned), walk-head 6.85 m
+ *                             commanded for 6.45 m walked. The FIFO weighs each queued fix by 1 / (sigma² + (share x
+ *                             motion it was moved by)²), so fixes moved far by odometry count less: before, every queued
+ *                             fix counted the same and the belief ran 2° ahead of the turn (turn-head, FIFO heading
+ *                             median)
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
                                  double ballAgreementMetres, PairWeighting pairWeighting, double fieldMarginMetres,
@@ -82,7 +92,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  double fusionClusterMetres, double fusionWeightExponent,
                                  double fallTiltDeg, double fallGyroDegPerSec, double fallSupportNewtons,
                                  int fallConfirmCycles, double fallBackMinDeg, double accSmoothing, int fallTiltCycles,
-                                 int fallStuckCycles, int ballMissFrames, double ballMissViewDeg) {
+                                 int fallStuckCycles, int ballMissFrames, double ballMissViewDeg,
+                                 double fifoFixSigmaMetres, double fifoFixSigmaDeg, double odometryErrorShare) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -103,7 +114,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             5, 5,
             1.0, 3,
             50, 150, 20, 5, 30, 0.05, 3, 50,
-            3, 50);
+            3, 50,
+            0.05, 0.2, 0.1);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -124,7 +136,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare);
     }
 
     /** The same with other relocation constants (k frames, far metres and degrees, spread metres and degrees). */
@@ -134,7 +146,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 deg, spreadMetres, spreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare);
     }
 
     /**
@@ -147,7 +159,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, metres, share, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare);
     }
 
     /** The same with another ball-miss rule (frames in a row, 0 = off; view half-angle in degrees). */
@@ -157,7 +169,17 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                frames, viewDeg);
+                frames, viewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare);
+    }
+
+    /** The same with another FIFO motion weighting (fix sigmas, odometry share; NaN share: Algorithm 1's plain mean). */
+    public LocalizationConfig withOdometryWeighting(double sigmaMetres, double sigmaDeg, double share) {
+        return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                ballMissFrames, ballMissViewDeg, sigmaMetres, sigmaDeg, share);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
@@ -166,6 +188,6 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare);
     }
 }

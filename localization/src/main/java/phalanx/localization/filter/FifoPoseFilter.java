@@ -21,6 +21,7 @@ public final class FifoPoseFilter implements PoseFilter {
     public FifoPoseFilter(LocalizationConfig c) {
         fifo = new LocalizationFilter(c.fifoMaxSize(), c.selfAgreementMetres(), c.selfAgreementDeg(),
                 c.relocateFrames(), c.relocateMetres(), c.relocateDeg(), c.relocateSpreadMetres(), c.relocateSpreadDeg());
+        if (!Double.isNaN(c.odometryErrorShare())) fifo.weighByMotion(c.fifoFixSigmaMetres(), c.fifoFixSigmaDeg(), c.odometryErrorShare());
         residualMetres = c.relocateResidualMetres();
         residualShare = c.relocateResidualShare();
     }

@@ -25,6 +25,10 @@ public final class LocalizationFilter {
     private final double agreeMetres, agreeDeg;
     private final boolean withAngle;
     private final double[] xs, ys, ts;
+    /** Per entry: the distance (m) and the turn (deg, absolute) {@link #shift} has moved it by since it was taken. */
+    private final double[] moved, turned;
+    /** Motion weighting (off while odometryShare is NaN): see {@link #weighByMotion}. */
+    private double sigmaMetres = Double.NaN, sigmaDeg = Double.NaN, odometryShare = Double.NaN;
     private int head, size;
     private int accepted, rejected, starts, relocations;
     /** Relocation (off when relocateFrames is 0) and the refused estimates counted towards it, oldest first. */
@@ -65,6 +69,37 @@ public final class LocalizationFilter {
         xs = new double[maxSize];
         ys = new double[maxSize];
         ts = new double[maxSize];
+        moved = new double[maxSize];
+        turned = new double[maxSize];
+    }
+
+    /**
+     * Beyond the thesis (issue 19): the average weighs each estimate by how far {@link #shift} has moved it. The
+     * walk's odometry is off by about a tenth of the motion, so an estimate moved by it is that much less sure:
+     * position weight 1 / (sigmaMetres² + (share · metres moved)²), heading weight 1 / (sigmaDeg² + (share · degrees
+     * turned)²). Without motion every weight is the same and the average is Algorithm 1's. Returns this.
+     */
+    public LocalizationFilter weighByMotion(double sigmaMetres, double sigmaDeg, double odometryShare) {
+        if (!(sigmaMetres > 0) || !(sigmaDeg > 0) || !(odometryShare >= 0))
+            throw new IllegalArgumentException("motion weighting needs positive sigmas and a share >= 0");
+        this.sigmaMetres = sigmaMetres;
+        this.sigmaDeg = sigmaDeg;
+        this.odometryShare = odometryShare;
+        return this;
+    }
+
+    private boolean weighted() { return !Double.isNaN(odometryShare); }
+
+    private double positionWeight(int i) {
+        if (!weighted()) return 1;
+        double e = odometryShare * moved[i];
+        return 1 / (sigmaMetres * sigmaMetres + e * e);
+    }
+
+    private double headingWeight(int i) {
+        if (!weighted()) return 1;
+        double e = odometryShare * turned[i];
+        return 1 / (sigmaDeg * sigmaDeg + e * e);
     }
 
     /** Algorithm 1 with a pose estimate; returns true when it was accepted into the queue. */
@@ -109,6 +144,7 @@ public final class LocalizationFilter {
                 xs[k] = px[k];
                 ys[k] = py[k];
                 ts[k] = pt[k];
+                moved[k] = turned[k] = 0;   // (the pending estimates' own motion is not kept: they start afresh)
             }
             size = pending;
             pending = 0;
@@ -124,6 +160,7 @@ public final class LocalizationFilter {
         xs[i] = x;
         ys[i] = y;
         ts[i] = t;
+        moved[i] = turned[i] = 0;
         size++;
         accepted++;
         return true;
@@ -164,6 +201,8 @@ public final class LocalizationFilter {
             xs[i] += c * forward - s * left;
             ys[i] += s * forward + c * left;
             ts[i] = Angles.normalize(ts[i] + turnDeg);
+            moved[i] += Math.hypot(forward, left);
+            turned[i] += Math.abs(turnDeg);
         }
         for (int k = 0; k < pending; k++) {
             double r = Math.toRadians(pt[k]), c = Math.cos(r), s = Math.sin(r);
@@ -205,23 +244,34 @@ public final class LocalizationFilter {
     }
 
     private double meanX() {
-        double s = 0;
-        for (int k = 0; k < size; k++) s += xs[(head + k) % maxSize];
-        return s / size;
+        double s = 0, w = 0;
+        for (int k = 0; k < size; k++) {
+            int i = (head + k) % maxSize;
+            double wi = positionWeight(i);
+            s += wi * xs[i];
+            w += wi;
+        }
+        return s / w;
     }
 
     private double meanY() {
-        double s = 0;
-        for (int k = 0; k < size; k++) s += ys[(head + k) % maxSize];
-        return s / size;
+        double s = 0, w = 0;
+        for (int k = 0; k < size; k++) {
+            int i = (head + k) % maxSize;
+            double wi = positionWeight(i);
+            s += wi * ys[i];
+            w += wi;
+        }
+        return s / w;
     }
 
     private double meanTheta() {
         double c = 0, s = 0;
         for (int k = 0; k < size; k++) {
-            double r = Math.toRadians(ts[(head + k) % maxSize]);
-            c += Math.cos(r);
-            s += Math.sin(r);
+            int i = (head + k) % maxSize;
+            double r = Math.toRadians(ts[i]), w = headingWeight(i);
+            c += w * Math.cos(r);
+            s += w * Math.sin(r);
         }
         return Math.toDegrees(Math.atan2(s, c));
     }

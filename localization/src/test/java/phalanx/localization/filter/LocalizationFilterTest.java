@@ -189,4 +189,53 @@ class LocalizationFilterTest {
         assertFalse(f.add(new Pose2(4, 0, 0), true), "the thesis's filter: refused");
         assertEquals(0, f.relocations());
     }
+
+    /**
+     * Issue 19, turn-head: the walk's odometry reports 1.20°/cycle where the robot turns 1.10°. Fixes at the true
+     * heading every 3rd cycle, the queue moved by the reported turn: with every fix counting the same (Algorithm 1)
+     * the average runs ahead of the turn by the odometry error of its older entries (here 2.5°); weighed by the motion
+     * each entry was moved by, the newest fixes dominate and it stays within 0.25°.
+     */
+    @Test
+    void fixesMovedFarByOdometryCountLess() {
+        LocalizationFilter plain = new LocalizationFilter(10, 0.5, 15);
+        LocalizationFilter weighed = new LocalizationFilter(10, 0.5, 15).weighByMotion(0.05, 0.2, 0.1);
+        double truth = 0;
+        for (int k = 1; k <= 60; k++) {
+            truth += 1.10;
+            plain.shift(0, 0, 1.20);
+            weighed.shift(0, 0, 1.20);
+            if (k % 3 == 0) {
+                assertTrue(plain.add(new Pose2(0, 0, truth)));
+                assertTrue(weighed.add(new Pose2(0, 0, truth)));
+            }
+        }
+        assertEquals(10, plain.size());
+        // The plain mean: entries moved 0, 3, ..., 27 cycles by a 0.1°/cycle error, 1.35° ahead on average.
+        assertEquals(1.35, plain.pose().thetaDeg() - truth, 0.01);
+        assertEquals(0, weighed.pose().thetaDeg() - truth, 0.25, "the newest fixes dominate while turning");
+    }
+
+    @Test
+    void withoutMotionTheWeighedAverageIsAlgorithm1s() {
+        LocalizationFilter f = new LocalizationFilter(10, 0.5, 15).weighByMotion(0.05, 0.2, 0.1);
+        f.add(new Pose2(1, 1, 10));
+        f.add(new Pose2(1.2, 1.4, 20));
+        f.add(new Pose2(1.1, 0.9, 12));
+        assertEquals(1.1, f.pose().x(), 1e-9);
+        assertEquals(1.1, f.pose().y(), 1e-9);
+        assertEquals(14, f.pose().thetaDeg(), 0.05);
+        // Walking: the entry moved 1 m (0.1 m odometry error, twice the fix's 0.05 m) weighs 1/5 of a fresh one.
+        f.clear();
+        f.add(new Pose2(0, 0, 0));
+        f.shift(1, 0, 0);
+        f.add(new Pose2(1.5, 0, 0));
+        assertEquals((1 * 1 + 1.5 * 5) / 6.0, f.pose().x(), 1e-9);
+    }
+
+    @Test
+    void motionWeightingRefusesBadConstants() {
+        assertThrows(IllegalArgumentException.class, () -> new LocalizationFilter(10, 0.5, 15).weighByMotion(0, 0.2, 0.1));
+        assertThrows(IllegalArgumentException.class, () -> new LocalizationFilter(10, 0.5, 15).weighByMotion(0.05, 0.2, -1));
+    }
 }
