@@ -360,7 +360,10 @@ class LocalizeEvalPerRecordingTest {
                 // 0.026 m (the ball belief restarts at the re-initialisation, placed with the first poses
                 // after it, a few cm off; in S6 the head pan then hides the ball, so those stay for 1 s).
                 assertTrue(r.selfP95() <= before[i][1] + 0.0005, what + ": self p95, before " + before[i][1]);
-                assertTrue(r.thetaP95() <= before[i][2] + 0.005, what + ": heading p95, before " + before[i][2]);
+                // Heading p95 by 0.02° at most: the gyro's turn between fixes (LocalizationConfig.gyroTurn, issue 19)
+                // moves the FIFO's queued fixes by the torso's sway, so its motion weights favour the newest fixes
+                // (FIFO S5_agent7 0.09 -> 0.10°, S6 0.11 -> 0.12°, as printed).
+                assertTrue(r.thetaP95() <= before[i][2] + 0.02, what + ": heading p95, before " + before[i][2]);
                 assertTrue(r.ballMedian() <= before[i][3] + 0.0005, what + ": ball median, before " + before[i][3]);
                 assertTrue(r.ballP95() <= Math.min(before[i][4] + 0.015, 0.6), what + ": ball p95, before " + before[i][4]);
             }

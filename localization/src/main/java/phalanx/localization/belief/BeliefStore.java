@@ -145,6 +145,12 @@ public final class BeliefStore {
         lastTime = p.time();
         tilt.update(p.gyro(), p.acc(), dt);
 
+        // The turn since the last cycle (issue 19): the gyro's about the vertical where there is a reading (config.gyroTurn),
+        // else the odometry's. Upright, gyro z x dt matches the true yaw change of the same cycle to 0.008°/cycle rms
+        // (turn-head, walk-head, crowd), where the walk's odometry commands 1.20°/cycle for 1.10 turned, and without
+        // odometry the belief did not turn at all between fixes (turn-head: 61° behind, single landmarks then gated out).
+        double rate = config.gyroTurn() ? tilt.turnRateDeg(p.gyro()) : Double.NaN;
+        if (Double.isFinite(rate) && dt > 0 && dt < 0.5) odoTurn = rate * dt;
         selfFilter.predict(odoForward, odoLeft, odoTurn);
         if (ballRelative != null && (odoForward != 0 || odoLeft != 0 || odoTurn != 0)) {
             // ballRelative.minus(new Vector2(odoForward, odoLeft)).rotate(-odoTurn) in one allocation

@@ -46,6 +46,15 @@ public final class TiltEstimator {
         if (n > 1e-9) { ux /= n; uy /= n; uz /= n; } else { ux = 0; uy = 0; uz = 1; }
     }
 
+    /**
+     * The torso's turn rate about the vertical, °/s (positive: to the left): the gyro's rates (torso frame, °/s)
+     * along the estimated "up". Upright this is the gyro's z; NaN without a finite reading. No allocation.
+     */
+    public double turnRateDeg(Vector3 gyro) {
+        if (gyro == null || !gyro.isFinite()) return Double.NaN;
+        return gyro.x() * ux + gyro.y() * uy + gyro.z() * uz;
+    }
+
     /** "Up" in the torso frame as a unit vector scaled to 9.81 (the shape of an accelerometer reading). */
     public Vector3 up() { return new Vector3(ux * G, uy * G, uz * G); }
 
