@@ -91,6 +91,20 @@ package phalanx.localization;
  *                             cycle only (1-3.8° there), so the chi² gate refused every single landmark. Measured in
  *                             recordings/README.md: heading p95 under 1° on every recording, both filters, with and
  *                             without odometry. false: the odometry's turn (as before)
+ * @param ballRollMinSpeed     the ball's queued sightings move on between sightings with Track Moving Object's velocity
+ *                             when it is at least this, m/s (issue 19, not in the thesis; +Infinity: off). A still ball's
+ *                             tracked speed stays under 0.5 on walk-head(-right) and turn-head (at most 0.44-0.50), up to
+ *                             0.75 after fall-right's get-up (FIFO); the trainer's rolls start at 6-7 m/s. Before, the belief (the queue's mean) trailed a rolling
+ *                             ball by 0.2-0.4 m while every sighting was within 3 cm of it (ball-roll lines 140-160)
+ * @param ballDecayPerSecond   the server's ball drag k, 1/s: v(t) = v0 e^(-kt), 1.062 measured for every start speed
+ *                             (agent/README.md, bench ball-decay; keeper.ballDecay). The tracked velocity (the mean over
+ *                             its window) is brought forward to now with it, and the prediction slows with it
+ * @param ballRollAgreeShare   the prediction runs only while the last two sightings' displacement over their time agrees
+ *                             with the tracked velocity within this share of the speed plus ballRollAgreeMps: a ball the
+ *                             trainer placed elsewhere makes a jump in the tracker's window (crowd line 34: 2.99 m/s
+ *                             for a ball lying still, carried 1.7 m off) and then shows no motion
+ * @param ballRollAgreeMps     the fixed part of that tolerance, m/s (0.5: ball sightings 3 vision frames apart are
+ *                             within 2-3 cm, about 0.4 m/s)
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
                                  double ballAgreementMetres, PairWeighting pairWeighting, double fieldMarginMetres,
@@ -104,7 +118,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  int fallConfirmCycles, double fallBackMinDeg, double accSmoothing, int fallTiltCycles,
                                  int fallStuckCycles, int ballMissFrames, double ballMissViewDeg,
                                  double fifoFixSigmaMetres, double fifoFixSigmaDeg, double odometryErrorShare,
-                                 boolean gyroTurn) {
+                                 boolean gyroTurn, double ballRollMinSpeed, double ballDecayPerSecond,
+                                 double ballRollAgreeShare, double ballRollAgreeMps) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -127,7 +142,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             50, 150, 20, 5, 30, 0.05, 3, 50,
             3, 50,
             0.05, 0.2, 0.1,
-            true);
+            true, 0.5, 1.06, 0.5, 0.5);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -148,7 +163,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
     }
 
     /** The same with other relocation constants (k frames, far metres and degrees, spread metres and degrees). */
@@ -158,7 +173,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 deg, spreadMetres, spreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
     }
 
     /**
@@ -171,7 +186,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, metres, share, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
     }
 
     /** The same with another ball-miss rule (frames in a row, 0 = off; view half-angle in degrees). */
@@ -181,7 +196,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                frames, viewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn);
+                frames, viewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
     }
 
     /** The same with another FIFO motion weighting (fix sigmas, odometry share; NaN share: Algorithm 1's plain mean). */
@@ -191,7 +206,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, sigmaMetres, sigmaDeg, share, gyroTurn);
+                ballMissFrames, ballMissViewDeg, sigmaMetres, sigmaDeg, share, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
     }
 
     /** The same with the gyro's turn (true) or the odometry's (false) moving the self belief between fixes. */
@@ -201,7 +216,18 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyro);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyro, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+    }
+
+    /** The same with another ball prediction (minimum speed, +Infinity: off; drag per second; agreement share and m/s). */
+    public LocalizationConfig withBallPrediction(double minSpeed, double decayPerSecond, double agreeShare, double agreeMps) {
+        return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn,
+                minSpeed, decayPerSecond, agreeShare, agreeMps);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
@@ -210,6 +236,6 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
     }
 }

@@ -66,6 +66,10 @@ public final class BeliefStore {
     private final TiltEstimator tilt;
     private double lastTime = Double.NaN;
     private double odoForward, odoLeft, odoTurn;
+    /** The rolling ball's velocity the ball queue is moved by each cycle (own frame, m/s); 0 while none is tracked. */
+    private double ballVx, ballVy;
+    /** The last ball sighting placed on the field (own frame) and its time, for {@link #rolling}. */
+    private double lastSeenX, lastSeenY, lastSeenTime = Double.NaN;
     /** The self filter has had a belief since this store was made: a further start is a re-initialisation. */
     private boolean selfStarted;
     /** Steady vision frames in a row with the believed ball in view and no ball seen. */
@@ -115,6 +119,7 @@ public final class BeliefStore {
         selfFilter.reset();
         ballFilter.clear();
         ballTracker.clear();
+        ballVx = ballVy = 0;
         selfTime = Double.NEGATIVE_INFINITY;
     }
 
@@ -126,6 +131,7 @@ public final class BeliefStore {
         ballMisses = 0;
         ballFilter.clear();
         ballTracker.clear();
+        ballVx = ballVy = 0;
         ballRelative = null;
         ballTime = Double.NEGATIVE_INFINITY;
     }
@@ -159,6 +165,13 @@ public final class BeliefStore {
             ballRelative = new Vector2(c * x - s * y, s * x + c * y);
         }
         odoForward = odoLeft = odoTurn = 0;
+        if ((ballVx != 0 || ballVy != 0) && dt > 0 && dt < 0.5) {
+            // The rolling ball (issue 19): its queued sightings move on with it, slowing as the server's drag does.
+            ballFilter.translate(ballVx * dt, ballVy * dt);
+            double decay = Math.exp(-config.ballDecayPerSecond() * dt);
+            ballVx *= decay;
+            ballVy *= decay;
+        }
 
         if (p.hasVision()) see(p, fall);
         else stats.noVision++;
@@ -245,6 +258,7 @@ public final class BeliefStore {
                     // place would pass for seen just now and be looked at instead of the ball (session 19).
                     if (ballFilter.add(g)) ballTime = time;
                     ballTracker.observe(g, time);
+                    rolling(g);
                 } else {
                     ballTime = time;
                 }
@@ -255,6 +269,34 @@ public final class BeliefStore {
         if (changed) {
             mateList = collect(mates);
             otherList = collect(others);
+        }
+    }
+
+    /**
+     * The velocity the ball queue moves by between sightings (issue 19, not in the thesis): Track Moving Object's, at
+     * least {@code ballRollMinSpeed}, brought forward to now with the drag (it is the mean over the tracker's window,
+     * centred {@link MovingObjectTracker#age} ago), and only while the last two sightings show the ball moving, at
+     * least {@code ballRollMinSpeed} too and the same way (within {@code ballRollAgreeShare} of the speed plus
+     * {@code ballRollAgreeMps}): a ball placed elsewhere shows a jump in the tracker's window and then no motion, and
+     * would otherwise be carried on at the jump's speed. Else 0.
+     */
+    private void rolling(Vector2 g) {
+        Vector2 v = ballTracker.velocity();
+        boolean agrees = false;
+        if (v != null && time > lastSeenTime) {
+            double ix = (g.x() - lastSeenX) / (time - lastSeenTime), iy = (g.y() - lastSeenY) / (time - lastSeenTime);
+            agrees = Math.hypot(ix, iy) >= config.ballRollMinSpeed()
+                    && Math.hypot(ix - v.x(), iy - v.y()) <= config.ballRollAgreeShare() * v.norm() + config.ballRollAgreeMps();
+        }
+        lastSeenX = g.x();
+        lastSeenY = g.y();
+        lastSeenTime = time;
+        if (agrees && v.norm() >= config.ballRollMinSpeed()) {
+            double f = Math.exp(-config.ballDecayPerSecond() * ballTracker.age(time));
+            ballVx = v.x() * f;
+            ballVy = v.y() * f;
+        } else {
+            ballVx = ballVy = 0;
         }
     }
 

@@ -59,5 +59,19 @@ public final class MovingObjectTracker {
         return new Vector2((nx - ox) / setSize / dt, (ny - oy) / setSize / dt);
     }
 
+    /**
+     * How long before {@code now} the {@link #velocity} applies, seconds: from the midpoint of the two sets' mean
+     * times (the velocity is their mean over that span). NaN until {@link #ready}.
+     */
+    public double age(double now) {
+        if (!ready()) return Double.NaN;
+        double ot = 0, nt = 0;
+        for (int k = 0; k < setSize; k++) {
+            ot += ts[(next + k) % capacity];
+            nt += ts[(next + delay + k) % capacity];
+        }
+        return now - (ot + nt) / (2 * setSize);
+    }
+
     public void clear() { count = 0; }
 }
