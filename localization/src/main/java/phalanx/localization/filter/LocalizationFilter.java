@@ -243,23 +243,17 @@ public final class LocalizationFilter {
         return size == 0 ? null : new Vector2(meanX(), meanY());
     }
 
-    private double meanX() {
-        double s = 0, w = 0;
-        for (int k = 0; k < size; k++) {
-            int i = (head + k) % maxSize;
-            double wi = positionWeight(i);
-            s += wi * xs[i];
-            w += wi;
-        }
-        return s / w;
-    }
+    private double meanX() { return weightedMean(xs); }
 
-    private double meanY() {
+    private double meanY() { return weightedMean(ys); }
+
+    /** The queue's mean of one coordinate, each entry weighted by positionWeight. */
+    private double weightedMean(double[] values) {
         double s = 0, w = 0;
         for (int k = 0; k < size; k++) {
             int i = (head + k) % maxSize;
             double wi = positionWeight(i);
-            s += wi * ys[i];
+            s += wi * values[i];
             w += wi;
         }
         return s / w;
