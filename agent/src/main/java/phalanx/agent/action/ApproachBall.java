@@ -13,8 +13,8 @@ import phalanx.motion.walk.WalkConfig;
 /**
  * Ours, On Ball's way to the ball when the robot knows where it is (AgentConfig.Approach): instead of
  * 4.6.2's Walk To Ball (turn, then walk straight at the ball) and the align orbit around it, walk with
- * the omnidirectional walk to the spot behind the ball on the line from the opponent goal's centre
- * through the ball, turning on the way, so the robot arrives facing the goal with the ball in front of
+ * the omnidirectional walk to the spot behind the ball on the line from the opponent goal's aim point
+ * ({@link Facts#goalAim}: the centre from afar) through the ball, turning on the way, so the robot arrives facing the goal with the ball in front of
  * its right foot. A robot that is not yet behind the ball goes to a point beside it first, not through it.
  * The head is {@link Gaze}'s: the ball, or a pan for landmarks when the self belief goes stale.
  */
@@ -47,7 +47,7 @@ public final class ApproachBall implements Action {
         Pose2 self = Facts.self(s, config);
         Vector2 ball = Facts.ballGlobal(s, config);
         if (self == null || ball == null || s.field() == null) return null;
-        Vector2 toGoal = s.field().opponentGoal().minus(ball);
+        Vector2 toGoal = Facts.goalAim(s, ball).minus(ball);
         double n = toGoal.norm();
         if (!(n > 1e-6)) return null;
         Vector2 g = toGoal.times(1 / n);

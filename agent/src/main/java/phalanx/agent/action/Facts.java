@@ -99,6 +99,17 @@ public final class Facts {
         return self == null || global == null ? null : self.toRelative(global);
     }
 
+    /**
+     * Where a kick or a dribble from {@code from} aims at the opponent goal (FieldSpec.opponentGoalAim), the
+     * posts brought in by AIM_POST_MARGIN. Null without a field.
+     */
+    public static Vector2 goalAim(Situation s, Vector2 from) {
+        return s.field() == null ? null : s.field().opponentGoalAim(from, AIM_POST_MARGIN);
+    }
+
+    /** The posts stand outside the 2.1 m mouth (naov4/goal.rsg): the ball's radius, 0.042 m, and 0.1 m to spare. */
+    static final double AIM_POST_MARGIN = 0.15;
+
     static boolean finite(Pose2 p) {
         return p != null && Double.isFinite(p.x()) && Double.isFinite(p.y()) && Double.isFinite(p.thetaDeg());
     }

@@ -30,13 +30,13 @@ public final class FindOpponentGoal extends SearchAction {
     public boolean done(Situation s) { return Facts.selfLocalized(s, config) && s.field() != null; }
 
     /**
-     * The opponent goal centre's direction as seen from a point of the own frame, relative to the
+     * The direction to aim at the opponent goal from a point of the own frame ({@link Facts#goalAim}), relative to the
      * body's heading (degrees, + left); NaN without a self pose.
      */
     public static double goalBearingFrom(Situation s, AgentConfig c, Vector2 from) {
         Pose2 self = Facts.self(s, c);
         if (self == null || from == null || s.field() == null) return Double.NaN;
-        Vector2 d = s.field().opponentGoal().minus(from);
+        Vector2 d = Facts.goalAim(s, from).minus(from);
         return phalanx.model.field.Angles.difference(d.angleDeg(), self.thetaDeg());
     }
 }

@@ -151,10 +151,10 @@ public final class OnBall implements Action {
         return reach > 0 && ball != null && ball.norm() <= reach && !Double.isNaN(pressedHeading(s));
     }
 
-    /** Field-frame direction from the ball to the opponent goal's centre, degrees; NaN without a ball or field. */
+    /** Field-frame direction from the ball to where it aims at the opponent goal, degrees; NaN without a ball or field. */
     private double goalDirection(Situation s) {
         Vector2 from = Facts.ballGlobal(s, config);
-        return from == null || s.field() == null ? Double.NaN : s.field().opponentGoal().minus(from).angleDeg();
+        return from == null || s.field() == null ? Double.NaN : Facts.goalAim(s, from).minus(from).angleDeg();
     }
 
     /**
@@ -168,7 +168,7 @@ public final class OnBall implements Action {
         return state != State.WALK_TO_BALL && ball.norm() > config.kick().restartDistance();
     }
 
-    /** Heading error to the opponent goal's centre as seen from the ball (degrees, + left), NaN without a self pose. */
+    /** Heading error to the goal's aim point as seen from the ball (degrees, + left), NaN without a self pose. */
     double goalError(Situation s) {
         Vector2 from = Facts.ballGlobal(s, config);
         Pose2 self = Facts.self(s, config);

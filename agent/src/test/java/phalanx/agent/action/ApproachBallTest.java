@@ -28,6 +28,16 @@ class ApproachBallTest {
     }
 
     @Test
+    void besideThePostOnTheGoalLineItLinesUpOnTheGoalMouthNotItsCentre() {
+        // The centre is 82 degrees from here and the far post 85.7: a kick at the centre skims along the line.
+        var s = World.at(13, -3, 45).ballAt(14.85, -1.11).situation();
+        double heading = a.target(s).thetaDeg();
+        assertEquals(Facts.goalAim(s, new phalanx.model.field.Vector2(14.85, -1.11)).minus(new phalanx.model.field.Vector2(14.85, -1.11)).angleDeg(),
+                heading, 1e-9);
+        assertEquals(70.1, heading, 0.5, "the bisector of the posts (brought in 0.15 m) from the ball");
+    }
+
+    @Test
     void fromTheGoalSideItGoesRoundTheBallNotThroughIt() {
         var s = World.at(1.0, 0.1, 180).ballAt(0, 0).situation();   // between the ball and the goal, facing the ball
         Pose2 t = a.target(s);

@@ -55,11 +55,12 @@ class OnBallTest {
     void dribblesTowardTheGoalInsteadOfKickingWithinDribbleWithin() {
         AgentConfig dribbling = C.withKick(C.kick().withDribbleWithin(20));
         // At (0, 0) facing the goal (15 m away), ball 0.25 m ahead: aligned, so dribble: walk on, leaning toward
-        // the goal seen from the ball (atan2(0.055, 14.75) = 0.2136°, / 7°) and the ball's side (-0.055 / 0.1).
+        // the goal's aim seen from the ball (the posts' bisector meets the line at y = -0.0002: 0.2129°, / 7°) and the
+        // ball's side (-0.055 / 0.1).
         OnBall a = new OnBall(dribbling);
         Move m = a.decide(World.at(0, 0, 0).ballRel(0.25, -0.055).situation()).move();
         assertEquals(OnBall.State.DRIBBLE, a.state());
-        assertTrue(m instanceof Move.Walk w && !w.slow() && Math.abs(w.lean() - (0.2136 / 7 - 0.55)) < 1e-4, m.toString());
+        assertTrue(m instanceof Move.Walk w && !w.slow() && Math.abs(w.lean() - (0.2129 / 7 - 0.55)) < 1e-4, m.toString());
         // Standing at (0, 3) facing +x: the goal (15, 0) lies at -11.3° from the ball, more than twice 7°: go round it.
         OnBall b = new OnBall(dribbling.withKick(dribbling.kick()));
         b.decide(World.at(0, 3, -5).ballRel(0.25, 0).situation());

@@ -60,6 +60,23 @@ public record FieldSpec(String name, double length, double width, double goalWid
     /** Centre of the opponent's goal line in the own frame. */
     public Vector2 opponentGoal() { return new Vector2(halfLength(), 0); }
 
+    /**
+     * Where to aim at the opponent goal from a point of the own frame: the point of its goal line where the
+     * bisector of the angle between the two posts (each brought in by postMargin) meets it. Far out it is the
+     * centre; from a sharp angle it moves toward the near post, so the window on either side of the aim is the
+     * same angle (aiming at the centre from the goal line beside a post, the far post is the aim's edge).
+     * The centre from on or behind the goal line.
+     */
+    public Vector2 opponentGoalAim(Vector2 from, double postMargin) {
+        double post = goalWidth / 2 - postMargin;
+        Vector2 centre = opponentGoal();
+        if (from == null || !(from.x() < halfLength() - 1e-6) || post <= 0) return centre;
+        Vector2 a = new Vector2(halfLength(), post).minus(from), b = new Vector2(halfLength(), -post).minus(from);
+        Vector2 bisector = a.times(1 / a.norm()).plus(b.times(1 / b.norm()));
+        double t = (halfLength() - from.x()) / bisector.x();
+        return new Vector2(halfLength(), from.y() + bisector.y() * t);
+    }
+
     /** Centre of the own goal line in the own frame. */
     public Vector2 ownGoal() { return new Vector2(-halfLength(), 0); }
 }
