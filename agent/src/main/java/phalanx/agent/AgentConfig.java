@@ -99,7 +99,9 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          (session 21: 60, the heading's, before the push went from where the player stands)
      * @param shootWithin       ... but nearer the opponent goal than this it lines up and kicks (the normal kick) instead
      *                          of dribbling on, with or without an opponent near (ours, issue 18: in g18b our dribble
-     *                          reached 2.5 m from UTA's goal and their keeper cleared it 16 s later); 0 = dribble on
+     *                          reached 2.5 m from UTA's goal and their keeper cleared it 16 s later); 0 = dribble on.
+     *                          With an opponent at the ball it still walks the ball on when that push goes between the
+     *                          posts (session 23: lining up beside an opponent there took 9-24 s)
      * @param dribbleRestartDistance while dribbling, On Ball starts again only when the ball is this far, or not ahead
      *                          (ours, issue 18: each step of the dribble pushes the ball 0.5-1.4 m on, and with
      *                          restartDistance every push sent the player back to the approach and the alignment: 30 of

@@ -23,7 +23,8 @@ import phalanx.model.field.Vector2;
  * and facing within pressureMaxDeg of the opponent goal, it walks the ball on along its heading at once
  * instead of going round it and lining up a kick, which an opponent at the ball does not wait for; walking to such a
  * ball it goes through it from where it stands once within {@code pressureReach}, as long as that push does not go back
- * toward our half. Within {@code shootWithin} of the opponent goal it neither dribbles nor walks on: it lines up and shoots.
+ * toward our half. Within {@code shootWithin} of the opponent goal it does not dribble, and walks the ball on only when
+ * that push goes into the goal's mouth; else it lines up and shoots.
  */
 public final class OnBall implements Action {
     public enum State { WALK_TO_BALL, FIND_GOAL, ALIGN, PREPARE, KICK, DRIBBLE }
@@ -122,24 +123,27 @@ public final class OnBall implements Action {
         return s.playMode() == PlayMode.PLAY_ON && !Double.isNaN(d) && d < config.kick().dribbleWithin() && !shoots(d);
     }
 
-    /** Near enough the opponent goal to shoot: neither dribble nor walk the ball on under pressure. */
+    /** Near enough the opponent goal to shoot: no dribble, and under pressure a push only into the mouth. */
     private boolean shoots(double distanceToGoal) { return distanceToGoal < config.kick().shootWithin(); }
 
     /**
      * Pressed: PlayOn, an opponent within pressureDistance of the ball, and the push from here through the ball within
-     * pressureMaxDeg of the direction to the opponent goal. Then the direction to walk the ball on (field frame), else NaN.
+     * pressureMaxDeg of the direction to the opponent goal (within shootWithin: between its posts, Facts.goalMouthHalfAngle).
+     * Then the direction to walk the ball on (field frame), else NaN.
      * The push is the line from the player to the ball (its heading once the ball is at its feet).
      */
     private double pressedHeading(Situation s) {
         AgentConfig.Kick k = config.kick();
-        if (s.playMode() != PlayMode.PLAY_ON || k.pressureDistance() <= 0 || shoots(distanceToGoal(s))) return Double.NaN;
+        if (s.playMode() != PlayMode.PLAY_ON || k.pressureDistance() <= 0) return Double.NaN;
         Pose2 self = Facts.self(s, config);
         Vector2 ball = Facts.ballGlobal(s, config);
         double toGoal = goalDirection(s);
         if (self == null || Double.isNaN(toGoal) || !Facts.opponentNear(s, config, ball, k.pressureDistance())) return Double.NaN;
         Vector2 push = ball.minus(self.position());
         double dir = push.norm() < PUSH_AT_FEET ? self.thetaDeg() : push.angleDeg();
-        return Math.abs(Angles.difference(dir, toGoal)) <= k.pressureMaxDeg() ? dir : Double.NaN;
+        // Near the goal only a push into the mouth: lining up a kick there beside an opponent took 9-24 s (session 23).
+        double within = shoots(distanceToGoal(s)) ? Facts.goalMouthHalfAngle(s, ball) : k.pressureMaxDeg();
+        return Math.abs(Angles.difference(dir, toGoal)) <= within ? dir : Double.NaN;
     }
 
     /** Nearer than this the ball is at the feet and the push goes along the heading, m. */

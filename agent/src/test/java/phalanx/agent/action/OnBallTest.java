@@ -104,9 +104,10 @@ class OnBallTest {
         OnBall d = new OnBall(C.withKick(C.kick().withPressureDistance(0)));
         d.decide(World.at(8, 0, 20).ballRel(0.2, 0).opponentAt(5, 8.6, 0.4).situation());
         assertEquals(OnBall.State.ALIGN, d.state());
-        // Within shootWithin (4 m) of the goal it lines up its shot, opponent or not, and does not dribble.
+        // Within shootWithin (4 m) of the goal it does not dribble, and with an opponent at the ball it walks on only
+        // into the mouth: facing 30° (the near post is 22° off from the ball), it lines up its shot.
         OnBall e = new OnBall(C.withKick(C.kick().withDribbleWithin(8)));
-        e.decide(World.at(12.8, 0, 20).ballRel(0.2, 0).opponentAt(5, 13.4, 0.4).situation());
+        e.decide(World.at(12.8, 0, 30).ballRel(0.2, 0).opponentAt(5, 13.4, 0.4).situation());
         assertEquals(OnBall.State.ALIGN, e.state());
         OnBall f = new OnBall(C.withKick(C.kick().withDribbleWithin(8)));
         f.decide(World.at(12.8, 0, 0).ballRel(0.25, -0.055).situation());
@@ -162,6 +163,23 @@ class OnBallTest {
         OnBall e = new OnBall(C.withKick(C.kick().withPressure(0, C.kick().pressureMaxDeg())));
         e.decide(World.at(-12.2, -0.6, 0).ballAt(-12.07, -0.96).opponentAt(4, -11.87, -0.93).situation());
         assertEquals(OnBall.State.WALK_TO_BALL, e.state());
+    }
+
+    @Test
+    void nearTheGoalAContestedBallIsPushedThroughOnlyIntoTheMouth() {
+        // Session 22's g7 at 336-344 s: the ball still 3 m from the goal, an opponent at it, ours lining up a kick for 9 s.
+        // From (11.9, -1.4) the push through the ball at (12.2, -1.2) heads 33.7° off +x; from the ball the posts (brought
+        // in to ±0.9) lie 6.1° and 36.9° off: inside. A push from (12.2, -1.6) straight across the field misses.
+        OnBall a = new OnBall(C);
+        a.decide(World.at(11.9, -1.4, 30).ballAt(12.2, -1.2).opponentAt(4, 12.5, -1.0).situation());
+        assertEquals(OnBall.State.DRIBBLE, a.state(), "into the mouth, now");
+        OnBall b = new OnBall(C);
+        b.decide(World.at(12.2, -1.6, 90).ballAt(12.2, -1.2).opponentAt(4, 12.5, -1.0).situation());
+        assertNotEquals(OnBall.State.DRIBBLE, b.state(), "90° off +x: past the far post, so line up");
+        // The same push 6 m out (beyond shootWithin) only has to be within 90° of the goal.
+        OnBall c = new OnBall(C);
+        c.decide(World.at(9.0, -4.0, 90).ballAt(9.0, -3.6).opponentAt(4, 9.3, -3.4).situation());
+        assertEquals(OnBall.State.DRIBBLE, c.state());
     }
 
     @Test
