@@ -261,6 +261,24 @@ class GoalkeeperTest {
         assertTrue(f.challengeTarget().x() > -13.5, "straight through the ball: " + f.challengeTarget());
     }
 
+    @Test
+    void challengeDoesNotStopShortOfItsPointBehindTheBall() {
+        // Session 22's g8, 392-405 s: the ball at (-12.83, 0.62), the keeper 0.2-0.4 m from it on the goal's side but
+        // off the push line (outside the cone it walks through from), facing along the line (16 deg). At (-13.055, 0.317)
+        // it is 0.23 m from the point 0.3 m behind the ball: inside Walk To Coordinate's 0.25 m (0.5 m once there),
+        // so it stood, for 9 s, until UT Austin Villa shot past it.
+        Goalkeeper k = guarding();
+        Move m = k.decide(World.at(-13.055, 0.317, 16).ballAt(-12.83, 0.62).situation()).move();
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        assertEquals(-13.118, k.challengeTarget().x(), 0.01);
+        assertEquals(0.537, k.challengeTarget().y(), 0.01);
+        assertNotEquals(Move.STAND, m, "it walks on to the point behind the ball");
+        // There, it walks through the ball.
+        Move through = k.decide(World.at(-13.11, 0.53, 16).ballAt(-12.83, 0.62).situation()).move();
+        assertTrue(k.challengeTarget().x() > -12.83, "past the ball: " + k.challengeTarget());
+        assertTrue(through instanceof Move.Walk, through.toString());
+    }
+
     private static AgentConfig.Keeper withOutside(AgentConfig.Keeper k, double outside) {
         return new AgentConfig.Keeper(k.spotOffset(), k.diveSeconds(), k.postMargin(), k.bodyBlock(), k.ballDecay(), k.minApproachSpeed(),
                 k.relocalizeDistance(), k.liberoClearance(), k.liberoExitMargin(), k.liberoMaxSpeed(), k.shotSpeed(), k.dribbleDistance(),
