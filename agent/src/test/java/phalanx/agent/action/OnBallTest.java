@@ -202,9 +202,11 @@ class OnBallTest {
     @Test
     void nearTheGoalItKicksNormallyAndAlignsMorePrecisely() {
         OnBall a = new OnBall(C);
-        // 2 m from the goal: tolerance 2.5°/m × 2 m = 5°, raised to the 10° minimum; 25 m away: 45° cap;
-        // in our half 2.5°/m × 16.8 m = 42°; anywhere in the opponent's half (10 m out): the 10° minimum.
-        assertEquals(10, a.tolerance(World.at(12.8, 0, 0).ballRel(0.2, 0).situation()), 1e-9);
+        // In the opponent's half (10 m out): the 10° minimum; 25 m away: 45° cap; in our half 2.5°/m × 16.8 m = 42°.
+        // 2 m from the goal the mouth (posts brought in to ±0.9 m) spans ±24.2° from the ball, so less the kick's 10°
+        // spare: 14.2°; 0.3 m from the line ±71.6°: 61.6°.
+        assertEquals(14.23, a.tolerance(World.at(12.8, 0, 0).ballRel(0.2, 0).situation()), 0.01);
+        assertEquals(61.57, a.tolerance(World.at(14.5, 0, 0).ballRel(0.2, 0).situation()), 0.01);
         assertEquals(45, a.tolerance(World.at(-10.2, 0, 0).ballRel(0.2, 0).situation()), 1e-9);
         assertEquals(42, a.tolerance(World.at(-2, 0, 0).ballRel(0.2, 0).situation()), 1e-6);
         assertEquals(10, a.tolerance(World.at(4.8, 0, 0).ballRel(0.2, 0).situation()), 1e-6);
