@@ -67,11 +67,6 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
                        double positionTolerance, double thetaToleranceDeg, double slowdownDistance,
                        double ballStopDistance, double ballTurnToleranceDeg) {
         public static final Walk DEFAULT = new Walk(7, 0.3, 1.0, 7, 40, 0.25, 10, 0.6, 0.28, 10);
-
-        public Walk withPositionTolerance(double metres) {
-            return new Walk(leanBelowDeg, gainMin, gainMax, turnMinDeg, turnMaxDeg, metres, thetaToleranceDeg, slowdownDistance,
-                    ballStopDistance, ballTurnToleranceDeg);
-        }
     }
 
     /**
@@ -365,8 +360,6 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
             throw new IllegalArgumentException("every part of the agent config is required");
         }
     }
-
-    public AgentConfig withWalk(Walk w) { return new AgentConfig(head, beliefs, w, kick, obstacles, keeper, fallback, approach, kickOff, charging, setPieces); }
 
     public AgentConfig withKick(Kick k) { return new AgentConfig(head, beliefs, walk, k, obstacles, keeper, fallback, approach, kickOff, charging, setPieces); }
 

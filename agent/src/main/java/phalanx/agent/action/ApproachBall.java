@@ -69,6 +69,16 @@ public final class ApproachBall implements Action {
         Pose2 t = target(s);
         Pose2 self = Facts.self(s, config);
         if (t == null || self == null) return Decision.of(Move.STAND, gaze.head(s));
+        // The head follows the ball while the self belief is fresh and pans for landmarks when it is not.
+        return Decision.of(toward(self, t, a), gaze.head(s));
+    }
+
+    /**
+     * The omnidirectional walk from {@code self} to the pose {@code t}: facing the way beyond faceWayBeyond, turning to
+     * t's heading within it, full speed beyond slowWithin and proportionally slower within it (never below minShare).
+     * Also the keeper's Challenge's last metre (it side-steps to its point rather than turning round for a few cm).
+     */
+    public static Move.Omni toward(Pose2 self, Pose2 t, AgentConfig.Approach a) {
         Vector2 d = t.position().minus(self.position()).rotate(-self.thetaDeg());   // body frame
         double dist = d.norm();
         double faceErr = dist > a.faceWayBeyond() ? d.angleDeg() : Angles.difference(t.thetaDeg(), self.thetaDeg());
@@ -81,8 +91,7 @@ public final class ApproachBall implements Action {
         double fwd = big > 1e-12 ? fx / big * scale : 0, left = big > 1e-12 ? fy / big * scale : 0;
         // Badly turned, the robot turns first rather than walking sideways across the field.
         if (Math.abs(faceErr) > 60 && dist > a.faceWayBeyond()) { fwd *= 0.2; left *= 0.2; }
-        // The head follows the ball while the self belief is fresh and pans for landmarks when it is not.
-        return Decision.of(new Move.Omni(fwd, left, turn), gaze.head(s));
+        return new Move.Omni(fwd, left, turn);
     }
 
     /** At the spot behind the ball (not the point beside it), facing the goal. */

@@ -1,6 +1,7 @@
 package phalanx.agent.goalkeeper;
 
 import phalanx.agent.AgentConfig;
+import phalanx.agent.action.ApproachBall;
 import phalanx.agent.action.ChargingGuard;
 import phalanx.agent.action.Facts;
 import phalanx.agent.action.OnBall;
@@ -168,12 +169,18 @@ public final class Goalkeeper implements Action {
         Pose2 self = Facts.self(s, config);
         Vector2 to = clampToOwnArea(s.field(), self == null ? past : roundTheBall(self.position(), ball, u, past), goesOut ? outside + AREA_MARGIN : -AREA_MARGIN);
         challengeTarget = to;
-        if (toBall == null) toBall = new WalkToCoordinate(config.withWalk(config.walk().withPositionTolerance(CHALLENGE_TOLERANCE)), to.x(), to.y(), u.angleDeg());
+        if (toBall == null) toBall = new WalkToCoordinate(config, to.x(), to.y(), u.angleDeg());
         else toBall.target(to.x(), to.y(), u.angleDeg());
         Decision walk = toBall.decide(s);
         // Without a self pose the walk turns to localize, and its head must pan for landmarks, not track the ball:
         // in session 20's g1 the keeper challenged 17.5 s with no self pose, the ball 1.3 m away, and the goal came from there.
         if (self == null) return walk;
+        // Near its point it steps there facing the push, never "arrived" short of it (Walk To Coordinate's 0.25 m, 0.5 m
+        // once there): in session 22's g8 (392-405 s) it stood 0.2-0.4 m from a ball just outside its area, 0.28 m from
+        // the point behind it, for 9 s until UT Austin Villa shot past it. A tighter tolerance for the walk instead
+        // turned the keeper round to walk back a few cm (session 23, g3).
+        if (to.distanceTo(self.position()) <= CHALLENGE_STEP_WITHIN && to.distanceTo(self.position()) > CHALLENGE_THERE)
+            walk = Decision.of(ApproachBall.toward(self, new Pose2(to.x(), to.y(), u.angleDeg()), config.approach()), walk.head());
         // Going out, it is under the charging speed before it leaves the area (the walk needs ~0.4 m to slow down).
         boolean slow = goesOut && !inGoalArea(s.field(), self.position(), -SLOW_BEFORE_EDGE);
         return Decision.of(slow ? ChargingGuard.belowChargingSpeed(walk.move(), config.charging()) : walk.move(), track.head(s));
@@ -211,12 +218,10 @@ public final class Goalkeeper implements Action {
     /** Going round: then this far behind the ball on the goal's side, m. */
     private static final double ROUND_BEHIND = 0.3;
 
-    /**
-     * The Challenge's walk is there within this, m. With Walk To Coordinate's 0.25 m (0.5 m once arrived) the keeper
-     * stopped 0.3 m short of the point behind the ball, or at the ball short of the point past it, and stood: in session
-     * 22's g8 (392-405 s) 0.2-0.4 m from a ball outside its area for 9 s until UT Austin Villa shot past it.
-     */
-    private static final double CHALLENGE_TOLERANCE = 0.05;
+    /** Within this of its point the Challenge side-steps there with the omnidirectional walk, m ... */
+    private static final double CHALLENGE_STEP_WITHIN = 0.6;
+    /** ... until this near it, m. */
+    private static final double CHALLENGE_THERE = 0.05;
 
     /** How far inside its penalty area's edges the keeper's Challenge stops. */
     private static final double AREA_MARGIN = 0.15;

@@ -228,7 +228,8 @@ class GoalkeeperTest {
         assertTrue(atEdge instanceof Move.Walk w && w.slow() || atEdge instanceof Move.Omni o && o.forward() <= C.charging().speedShare(),
                 "walks on slowly: " + atEdge);
         Move pastEdge = k.decide(World.at(-13.35, 0.05, 0).ballAt(-13.06, 0.05).situation()).move();
-        assertTrue(pastEdge instanceof Move.Walk w && w.slow(), "walks on out of the area, slowly: " + pastEdge);
+        assertTrue(pastEdge instanceof Move.Walk w && w.slow() || pastEdge instanceof Move.Omni o && o.forward() > 0 && o.forward() <= C.charging().speedShare(),
+                "walks on out of the area, slowly: " + pastEdge);
         // The keeper that stays inside (challengeOutside 0) stops at the edge as before.
         Goalkeeper in = guarding(C.withKeeper(withOutside(C.keeper(), 0)));
         in.decide(World.at(-14.5, 0, 0).ballAt(-13.06, 0.05).situation());
@@ -272,11 +273,24 @@ class GoalkeeperTest {
         assertEquals(Goalkeeper.State.CHALLENGE, k.state());
         assertEquals(-13.118, k.challengeTarget().x(), 0.01);
         assertEquals(0.537, k.challengeTarget().y(), 0.01);
-        assertNotEquals(Move.STAND, m, "it walks on to the point behind the ball");
+        // It steps there (to its left, facing the push): the point lies 0.22 m to the left of its heading, 0.05 m back.
+        assertTrue(m instanceof Move.Omni o && o.left() > 0.2 && Math.abs(o.turn()) < 0.1, "steps on to the point behind the ball: " + m);
         // There, it walks through the ball.
         Move through = k.decide(World.at(-13.11, 0.53, 16).ballAt(-12.83, 0.62).situation()).move();
         assertTrue(k.challengeTarget().x() > -12.83, "past the ball: " + k.challengeTarget());
-        assertTrue(through instanceof Move.Walk, through.toString());
+        assertTrue(through instanceof Move.Omni o && o.forward() > 0, through.toString());
+    }
+
+    @Test
+    void challengeStepsBackToItsPointAtTheAreasEdgeWithoutTurningRound() {
+        // Session 23's g3, 516-531 s: the ball over 1 m outside the area, here at (-12.1, 1.04), the Challenge's point
+        // clamped to the area's edge (x = -13.35). A keeper 0.1 m beyond it steps back, still facing the field (it turned
+        // round to walk back a few cm when the walk's tolerance was tightened instead, and fell).
+        Goalkeeper k = guarding();
+        Move m = k.decide(World.at(-13.25, 1.14, 20).ballAt(-12.1, 1.04).situation()).move();
+        assertEquals(Goalkeeper.State.CHALLENGE, k.state());
+        assertEquals(-13.35, k.challengeTarget().x(), 1e-9);
+        assertTrue(m instanceof Move.Omni o && o.forward() < 0 && Math.abs(o.turn()) < 0.1, m.toString());
     }
 
     private static AgentConfig.Keeper withOutside(AgentConfig.Keeper k, double outside) {
