@@ -35,7 +35,8 @@ import java.util.List;
  * Ours beyond the thesis: a shot is also dived for in LOCALIZE and LIBERO while near the spot;
  * Libero waits for a (nearly) still ball; DIVING is a state of its own so nothing interrupts the dive;
  * a ball pushed along by a nearby opponent is not dived for unless it is shot (AgentConfig.Keeper.shotSpeed);
- * Guard side-steps to keep on the line from the goal's centre to the ball (AgentConfig.Keeper.maxShift);
+ * Guard side-steps to keep on the line from the goal's centre to the ball (AgentConfig.Keeper.maxShift), and steps back
+ * to the spot's depth when more than 0.2 m off it;
  * Challenge (issue 18) comes out for a ball near the goal instead of waiting on the line for the shot.
  */
 public final class Goalkeeper implements Action {
@@ -49,6 +50,7 @@ public final class Goalkeeper implements Action {
     private OnBall libero;
     private State state = State.LOCALIZE;
     private boolean shifting;
+    private boolean onDepth = true;
 
     public Goalkeeper(AgentConfig config) {
         this.config = config;
@@ -126,6 +128,12 @@ public final class Goalkeeper implements Action {
         double depth = ball.x() - goalX;
         double y = depth <= k.spotOffset() ? Math.signum(ball.y()) * k.maxShift() : ball.y() * k.spotOffset() / depth;
         y = Math.max(-k.maxShift(), Math.min(k.maxShift(), y));
+        // Off the spot's line by more than DEPTH_TOLERANCE (side steps drift back): step back onto it, facing the field.
+        // In session 23 the keeper stood on its goal line, 0.5 m behind the spot, for most of some halves, and two of
+        // UT Austin Villa's goals went in from 3.5-4 m past it there.
+        double depthOff = Math.abs(self.x() - (goalX + k.spotOffset()));
+        onDepth = depthOff <= (onDepth ? DEPTH_TOLERANCE : DEPTH_TOLERANCE / 3);
+        if (!onDepth) { shifting = false; return ApproachBall.toward(self, new Pose2(goalX + k.spotOffset(), y, 0), config.approach()); }
         double side = self.toRelative(new Vector2(goalX + k.spotOffset(), y)).y();   // + = to the keeper's left
         double limit = shifting ? k.shiftTolerance() / 3 : k.shiftTolerance();
         shifting = Math.abs(side) > limit;
@@ -217,6 +225,9 @@ public final class Goalkeeper implements Action {
     private static final double ROUND_SIDE = 0.35;
     /** Going round: then this far behind the ball on the goal's side, m. */
     private static final double ROUND_BEHIND = 0.3;
+
+    /** Guard holds the spot's depth within this, m; once it steps back onto it, within a third of it. */
+    private static final double DEPTH_TOLERANCE = 0.2;
 
     /** Within this of its point the Challenge side-steps there with the omnidirectional walk, m ... */
     private static final double CHALLENGE_STEP_WITHIN = 0.6;

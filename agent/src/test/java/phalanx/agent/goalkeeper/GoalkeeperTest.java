@@ -93,6 +93,19 @@ class GoalkeeperTest {
         assertEquals(Move.STAND, t.decide(World.at(-14.5, 0, 0).ballAt(-11, -2.67).situation()).move());
     }
 
+    @Test
+    void guardStepsBackToTheSpotsDepthWhenItHasDriftedOntoItsLine() {
+        // Session 23: the keeper stood on its goal line, 0.5 m behind its spot (x = -14.5), for most of some halves (its
+        // side steps drift back, and the spot is walked to again only 0.7 m off it); UT Austin Villa scored past it there.
+        Goalkeeper k = guarding();
+        assertEquals(Move.STAND, k.decide(World.at(-14.6, 0, 0).ballAt(-5, 0).situation()).move(), "0.1 m off: within 0.2 m");
+        Move back = k.decide(World.at(-14.8, 0, 0).ballAt(-5, 0).situation()).move();
+        assertEquals(Goalkeeper.State.GUARD, k.state());
+        assertTrue(back instanceof Move.Omni o && o.forward() > 0 && Math.abs(o.left()) < 1e-9 && Math.abs(o.turn()) < 1e-9, back.toString());
+        assertTrue(k.decide(World.at(-14.6, 0, 0).ballAt(-5, 0).situation()).move() instanceof Move.Omni, "on until within 0.07 m");
+        assertEquals(Move.STAND, k.decide(World.at(-14.52, 0, 0).ballAt(-5, 0).situation()).move());
+    }
+
     private static void assertNoDive(World w) {
         Goalkeeper k = guarding();
         Move m = k.decide(w.situation()).move();
