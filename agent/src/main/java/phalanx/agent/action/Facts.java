@@ -112,10 +112,7 @@ public final class Facts {
      * ball sent from there within this of the aim goes in. 0 without a field or from on or behind the goal line.
      */
     public static double goalMouthHalfAngle(Situation s, Vector2 from) {
-        if (s.field() == null || from == null || !(from.x() < s.field().halfLength())) return 0;
-        double post = s.field().goalWidth() / 2 - AIM_POST_MARGIN, x = s.field().halfLength();
-        double a = new Vector2(x, post).minus(from).angleDeg(), b = new Vector2(x, -post).minus(from).angleDeg();
-        return Math.abs(phalanx.model.field.Angles.difference(a, b)) / 2;
+        return s.field() == null ? 0 : s.field().opponentGoalHalfAngle(from, AIM_POST_MARGIN);
     }
 
     /** The posts stand outside the 2.1 m mouth (naov4/goal.rsg): the ball's radius, 0.042 m, and 0.1 m to spare. */

@@ -131,10 +131,10 @@ public final class Goalkeeper implements Action {
         // Off the spot's line by more than DEPTH_TOLERANCE (side steps drift back): step back onto it, facing the field.
         // In session 23 the keeper stood on its goal line, 0.5 m behind the spot, for most of some halves, and two of
         // UT Austin Villa's goals went in from 3.5-4 m past it there.
-        double depthOff = Math.abs(self.x() - (goalX + k.spotOffset()));
-        onDepth = depthOff <= (onDepth ? DEPTH_TOLERANCE : DEPTH_TOLERANCE / 3);
-        if (!onDepth) { shifting = false; return ApproachBall.toward(self, new Pose2(goalX + k.spotOffset(), y, 0), config.approach()); }
-        double side = self.toRelative(new Vector2(goalX + k.spotOffset(), y)).y();   // + = to the keeper's left
+        double spotX = goalX + k.spotOffset();
+        onDepth = Math.abs(self.x() - spotX) <= (onDepth ? DEPTH_TOLERANCE : DEPTH_TOLERANCE / 3);
+        if (!onDepth) { shifting = false; return ApproachBall.toward(self, new Pose2(spotX, y, 0), config.approach()); }
+        double side = self.toRelative(new Vector2(spotX, y)).y();   // + = to the keeper's left
         double limit = shifting ? k.shiftTolerance() / 3 : k.shiftTolerance();
         shifting = Math.abs(side) > limit;
         return shifting ? new Move.SideStep(side > 0) : Move.STAND;
@@ -187,7 +187,8 @@ public final class Goalkeeper implements Action {
         // once there): in session 22's g8 (392-405 s) it stood 0.2-0.4 m from a ball just outside its area, 0.28 m from
         // the point behind it, for 9 s until UT Austin Villa shot past it. A tighter tolerance for the walk instead
         // turned the keeper round to walk back a few cm (session 23, g3).
-        if (to.distanceTo(self.position()) <= CHALLENGE_STEP_WITHIN && to.distanceTo(self.position()) > CHALLENGE_THERE)
+        double toGo = to.distanceTo(self.position());
+        if (toGo <= CHALLENGE_STEP_WITHIN && toGo > CHALLENGE_THERE)
             walk = Decision.of(ApproachBall.toward(self, new Pose2(to.x(), to.y(), u.angleDeg()), config.approach()), walk.head());
         // Going out, it is under the charging speed before it leaves the area (the walk needs ~0.4 m to slow down).
         boolean slow = goesOut && !inGoalArea(s.field(), self.position(), -SLOW_BEFORE_EDGE);

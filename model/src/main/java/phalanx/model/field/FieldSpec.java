@@ -77,6 +77,17 @@ public record FieldSpec(String name, double length, double width, double goalWid
         return new Vector2(halfLength(), from.y() + bisector.y() * t);
     }
 
+    /**
+     * Half the angle between the opponent goal's posts (each brought in by postMargin) as seen from a point of the own
+     * frame, degrees: a ball sent from there within this of {@link #opponentGoalAim} goes in. 0 from on or behind the line.
+     */
+    public double opponentGoalHalfAngle(Vector2 from, double postMargin) {
+        double post = goalWidth / 2 - postMargin;
+        if (from == null || !(from.x() < halfLength()) || post <= 0) return 0;
+        double a = new Vector2(halfLength(), post).minus(from).angleDeg(), b = new Vector2(halfLength(), -post).minus(from).angleDeg();
+        return Math.abs(Angles.difference(a, b)) / 2;
+    }
+
     /** Centre of the own goal line in the own frame. */
     public Vector2 ownGoal() { return new Vector2(-halfLength(), 0); }
 }
