@@ -190,10 +190,11 @@ public final class CommandEvaluator implements CmaesSearch.Evaluator {
             cmd.addAll(List.of("-j", Integer.toString(jobs)));
             job = "bash " + ParallelHosts.quote(root.resolve("scripts/lib/tools/search-job").toString()) + " {} {%}";
         } else {
-            // a folder per job: --cleanup removes a job's folder when it is empty, and in a folder shared
-            // by a host's jobs that raced with the next job's transfer into it (found by the hosts test)
+            // one folder per job, right in the host's home: --cleanup runs rmdir on every empty folder of the
+            // path (GNU parallel 20221122), so a parent shared by a host's jobs vanished under the next job's
+            // `mkdir -p` and its params file was not transferred (CI, 2026-12-07; motion/README.md)
             cmd.addAll(ParallelHosts.sshOptions(hosts.file(), jobs, root,
-                    "phalanx-searches/" + workDir.toAbsolutePath().getFileName() + "/" + dir.getFileName() + "/{#}", dir));
+                    "phalanx-search-" + workDir.toAbsolutePath().getFileName() + "-" + dir.getFileName() + "-{#}", dir));
             cmd.addAll(List.of("--env", "SEARCH_EVAL", "--transferfile", "{}", "--return", "{.}.out", "--return", "{.}.err", "--cleanup",
                     "--retries", Integer.toString(hosts.retries())));
             // exec: parallel's remote wrapper stops the job it started (ParallelTournament.template)

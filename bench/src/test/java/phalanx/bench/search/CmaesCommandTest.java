@@ -169,6 +169,11 @@ class CmaesCommandTest {
         try (var s = Files.walk(homes.resolve("h1"))) {
             assertTrue(s.noneMatch(f -> f.getFileName().toString().startsWith("cand-")), "a candidate's file left on h1");
         }
+        // each job had a folder of its own in h1's home (no shared parent for --cleanup's rmdir to race with a
+        // transfer's mkdir -p), and every one of them went with its files
+        try (var s = Files.list(homes.resolve("h1"))) {
+            assertTrue(s.noneMatch(f -> f.getFileName().toString().startsWith("phalanx-search")), "a job's folder left on h1");
+        }
     }
 
     @Test
