@@ -92,9 +92,41 @@ public final class FieldPlayerBehaviour {
             runningOwn = true;
         }
         Action act = theirSetPiece.adjust(s, running);
-        Decision d = guard.apply(s, act.decide(s));
+        Decision chosen = act.decide(s);
+        Decision d = guard.apply(s, chosen);
         logPhase(s, act != running);
+        if (LOG.isLoggable(java.util.logging.Level.FINE)) trace(s, chosen, d);
         return d;
+    }
+
+    /**
+     * At FINE (off by default; a logging config sets this class to FINE, match/README.md): On Ball's state, the move and
+     * whether the charging guard slowed it, the ball and the nearest opponent (own frame), ten times a game second.
+     * For a match review of a player near the ball that does not get to it; nothing is built otherwise.
+     */
+    private void trace(Situation s, Decision chosen, Decision d) {
+        long tenth = (long) Math.floor(s.gameTime() * 10);
+        if (tenth == lastTrace || !(running instanceof OnBall o)) return;
+        lastTrace = tenth;
+        Vector2 ball = Facts.ball(s, config);
+        Pose2 self = Facts.self(s, config);
+        Vector2 opp = null;
+        WorldBelief b = s.belief();
+        if (b != null && b.opponents() != null)
+            for (PlayerBelief p : b.opponents()) {
+                if (p == null || !(b.time() - p.time() <= config.beliefs().playerMemorySeconds())) continue;
+                Vector2 r = Facts.relative(p, self);
+                if (r != null && r.isFinite() && (opp == null || r.norm() < opp.norm())) opp = r;
+            }
+        LOG.fine(String.format(Locale.ROOT, "trace t=%.1f %s move=%s%s ball=%s opp=%s self=%s", s.gameTime(), o.state(), d.move(),
+                d.move() != chosen.move() ? " (slowed)" : "", xy(ball), xy(opp),
+                self == null ? "?" : String.format(Locale.ROOT, "(%.2f,%.2f,%.0f)", self.position().x(), self.position().y(), self.thetaDeg())));
+    }
+
+    private long lastTrace = Long.MIN_VALUE;
+
+    private static String xy(Vector2 v) {
+        return v == null ? "?" : String.format(Locale.ROOT, "(%.2f,%.2f)", v.x(), v.y());
     }
 
     /**
