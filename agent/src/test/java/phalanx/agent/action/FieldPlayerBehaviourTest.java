@@ -182,4 +182,39 @@ class FieldPlayerBehaviourTest {
         w.mode = PlayMode.GAME_OVER;
         assertEquals(Move.STAND, b.decide(w.situation(), false, HOME).move());
     }
+
+    @Test
+    void atFineAnOnBallPlayerTracesItsStateMoveBallAndNearestOpponentTenTimesASecondAndNothingAtInfo() {
+        var log = java.util.logging.Logger.getLogger(FieldPlayerBehaviour.class.getName());
+        var lines = new java.util.ArrayList<String>();
+        var h = new java.util.logging.Handler() {
+            @Override public void publish(java.util.logging.LogRecord r) { if (r.getLevel() == java.util.logging.Level.FINE) lines.add(r.getMessage()); }
+            @Override public void flush() { }
+            @Override public void close() { }
+        };
+        h.setLevel(java.util.logging.Level.ALL);
+        var before = log.getLevel();
+        log.addHandler(h);
+        try {
+            FieldPlayerBehaviour b = new FieldPlayerBehaviour(C);
+            b.order(Action.of(5, ActionId.ON_BALL));
+            b.decide(World.at(0, 0, 0).time(10.00).ballRel(2, 0).opponentAt(3, 2.5, 0.5).situation(), false, HOME);
+            assertTrue(lines.isEmpty(), "at INFO (the default) nothing is traced: " + lines);
+            log.setLevel(java.util.logging.Level.FINE);
+            b.decide(World.at(0, 0, 0).time(10.02).ballRel(2, 0).opponentAt(3, 2.5, 0.5).situation(), false, HOME);
+            b.decide(World.at(0, 0, 0).time(10.04).ballRel(2, 0).opponentAt(3, 2.5, 0.5).situation(), false, HOME);
+            assertEquals(1, lines.size(), "one line a tenth of a second: " + lines);
+            b.decide(World.at(0, 0, 0).time(10.12).ballRel(2, 0).opponentAt(3, 2.5, 0.5).situation(), false, HOME);
+            assertEquals(2, lines.size(), lines.toString());
+            String l = lines.get(1);
+            assertTrue(l.startsWith("trace t=10.1 WALK_TO_BALL move=Walk["), l);
+            assertTrue(l.contains("ball=(2.00,0.00)") && l.contains("opp=(2.50,0.50)") && l.contains("self=(0.00,0.00,0)"), l);
+            b.order(Action.walkTo(5, 1, 2, 0));
+            b.decide(World.at(0, 0, 0).time(10.22).ballRel(2, 0).situation(), false, HOME);
+            assertEquals(2, lines.size(), "only On Ball is traced: " + lines);
+        } finally {
+            log.removeHandler(h);
+            log.setLevel(before);
+        }
+    }
 }
