@@ -48,20 +48,27 @@ public final class ApproachBall implements Action {
         Vector2 ball = Facts.ballGlobal(s, config);
         if (self == null || ball == null || s.field() == null) return null;
         Vector2 toGoal = Facts.goalAim(s, ball).minus(ball);
-        double n = toGoal.norm();
-        if (!(n > 1e-6)) return null;
-        Vector2 g = toGoal.times(1 / n);
-        Vector2 left = new Vector2(-g.y(), g.x());
-        Vector2 r = self.position().minus(ball);
-        double heading = g.angleDeg();
+        if (!(toGoal.norm() > 1e-6)) return null;
         // The right foot's kick wants the torso beside the ball by the spot's side offset (spotY < 0: ball to the right).
-        Vector2 spot = ball.minus(g.times(a.behind())).minus(left.times(config.kick().spotY()));
+        return behind(self.position(), ball, toGoal.angleDeg(), config.kick().spotY(), a);
+    }
+
+    /**
+     * The pose to walk to for a ball to be played along {@code dirDeg} (field frame): a.behind() behind the ball and
+     * {@code side} to its right (the ball that far left of the torso), facing dirDeg; for a robot not yet behind the ball,
+     * the point beside it (a.sideClearance() out on the robot's side) first, not through the ball.
+     */
+    static Pose2 behind(Vector2 self, Vector2 ball, double dirDeg, double side, AgentConfig.Approach a) {
+        Vector2 g = Vector2.polar(1, dirDeg);
+        Vector2 left = new Vector2(-g.y(), g.x());
+        Vector2 r = self.minus(ball);
         if (r.dot(g) > -0.6 * a.behind()) {
-            double side = r.dot(left) >= 0 ? 1 : -1;
-            Vector2 way = ball.minus(g.times(a.behind())).plus(left.times(side * a.sideClearance()));
-            return new Pose2(way.x(), way.y(), heading);
+            double towards = r.dot(left) >= 0 ? 1 : -1;
+            Vector2 way = ball.minus(g.times(a.behind())).plus(left.times(towards * a.sideClearance()));
+            return new Pose2(way.x(), way.y(), dirDeg);
         }
-        return new Pose2(spot.x(), spot.y(), heading);
+        Vector2 spot = ball.minus(g.times(a.behind())).minus(left.times(side));
+        return new Pose2(spot.x(), spot.y(), dirDeg);
     }
 
     @Override

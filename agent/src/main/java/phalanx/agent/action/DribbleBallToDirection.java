@@ -55,6 +55,8 @@ public final class DribbleBallToDirection implements Action {
         Vector2 ball = Facts.ball(s, config);
         if (ball == null) return walk.decide(s);
         if (!atFeet(ball)) {
+            Decision omni = toTheBall(s);
+            if (omni != null) return omni;
             if (ball.norm() > config.walk().ballStopDistance()) return walk.decide(s);
             if (ball.x() < BEHIND) return Decision.of(new Move.StepBack(), track.head(s));
             return Decision.of(new Move.SideStep(ball.y() > 0), track.head(s));
@@ -65,6 +67,21 @@ public final class DribbleBallToDirection implements Action {
         if (Math.abs(e) > 2 * config.walk().leanBelowDeg()) return orbit.step(s, ball, e);
         double lean = e / config.walk().leanBelowDeg() + ball.y() / FULL_LEAN_OFFSET;
         return Decision.of(new Move.Walk(Facts.clamp(lean, -1, 1), false), track.head(s));
+    }
+
+    /**
+     * Ours (session 24): with a fresh self pose and the approach on (AgentConfig.Approach), a ball away from the feet is
+     * walked to with the omnidirectional walk, to the point behind it along the dribble's direction, turning on the way
+     * ({@link ApproachBall#behind}). Walk To Ball turned on the spot and then walked slowly within 0.6 m: in a game against
+     * UT Austin Villa On Ball spent 106 s dribbling with the ball 0.4-1 m away, 40 s of it turning on the spot, while an
+     * opponent stood at the ball and lined up its kick. Null: the thesis's way.
+     */
+    private Decision toTheBall(Situation s) {
+        Pose2 self = Facts.self(s, config);
+        Vector2 ball = Facts.ballGlobal(s, config);
+        if (!config.approach().enabled() || self == null || ball == null || !Facts.selfLocalized(s, config)) return null;
+        Pose2 t = ApproachBall.behind(self.position(), ball, directionDeg, 0, config.approach());
+        return Decision.of(ApproachBall.toward(self, t, config.approach()), track.head(s));
     }
 
     private static boolean atFeet(Vector2 ball) {

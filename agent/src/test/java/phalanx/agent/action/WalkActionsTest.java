@@ -83,7 +83,8 @@ class WalkActionsTest {
 
     @Test
     void dribbleKeepsTheBallInFrontAndAlignsAroundIt() {
-        DribbleBallToDirection d = new DribbleBallToDirection(C, 0);
+        // The thesis's way to a ball away from the feet (Walk To Ball, steps); ours with the approach on is the next test.
+        DribbleBallToDirection d = new DribbleBallToDirection(C.withApproach(AgentConfig.Approach.THESIS), 0);
         Move on = d.decide(World.at(0, 0, 0).ballRel(0.2, 0).situation()).move();
         assertEquals(new Move.Walk(0, false), on);
         Move leanToBall = d.decide(World.at(0, 0, 0).ballRel(0.2, 0.05).situation()).move();
@@ -96,5 +97,21 @@ class WalkActionsTest {
         assertEquals(new Move.SideStep(false), d.decide(World.at(0, 0, 0).ballRel(0.12, -0.2).situation()).move());
         assertEquals(new Move.SideStep(true), d.decide(World.at(0, 0, 0).ballRel(0.1, 0.2).situation()).move());
         assertEquals(new Move.StepBack(), d.decide(World.at(0, 0, 0).ballRel(0.02, 0.2).situation()).move(), "beside the heel");
+    }
+
+    @Test
+    void withTheApproachOnTheDribbleWalksToABallAwayFromItsFeetWithTheOmnidirectionalWalkBehindItAlongItsDirection() {
+        DribbleBallToDirection d = new DribbleBallToDirection(C, 0);
+        // Ball 2 m ahead, 0.5 m left, dribbled along +x: to 0.22 m behind it, walking forward and left, turning left.
+        Move m = d.decide(World.at(0, 0, 0).ballRel(2, 0.5).situation()).move();
+        assertTrue(m instanceof Move.Omni o && o.forward() > 0 && o.left() > 0 && o.turn() > 0, m.toString());
+        // Ball 0.3 m ahead and 0.3 m to the right, off the feet: walked to sideways, no side step on the spot.
+        m = d.decide(World.at(0, 0, 0).ballRel(0.3, -0.3).situation()).move();
+        assertTrue(m instanceof Move.Omni o && o.left() < 0, m.toString());
+        // Ball behind the robot (the robot is past it along the direction): to the point beside the ball, not through it.
+        m = d.decide(World.at(0, 0, 0).ballRel(-0.5, 0).situation()).move();
+        assertTrue(m instanceof Move.Omni o && o.forward() < 0 && o.left() > 0, m.toString());
+        // At the feet it is the dribble itself.
+        assertEquals(new Move.Walk(0, false), d.decide(World.at(0, 0, 0).ballRel(0.2, 0).situation()).move());
     }
 }
