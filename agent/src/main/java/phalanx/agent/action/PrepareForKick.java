@@ -14,7 +14,7 @@ import phalanx.model.field.Vector2;
  * steps across to the right foot; the left foot's spot is the right one's mirror. Sideways first (a forward step with the ball
  * off to the side would push it away), then forward. Ours, beyond the thesis: a ball nearer than
  * the spot's band (at the feet) is not kicked off the shin; the robot steps back first (a side step
- * there would push the ball with the foot). The forward steps go on until the ball is within
+ * there would push the ball with the foot), and side-steps away from a ball that stays caught at its feet while it steps back. The forward steps go on until the ball is within
  * {@code toleranceFarX} beyond the spot, not just inside the band: the robot stops where it first
  * accepts the ball, so the far edge would be where every kick is played.
  */
@@ -50,11 +50,26 @@ public final class PrepareForKick implements Action {
         Vector2 ball = Facts.ball(s, config);
         if (ball == null || ready(ball)) return Decision.of(Move.STAND, track.head(s));
         AgentConfig.Kick k = config.kick();
-        if (ball.x() < k.spotX(strong) - k.toleranceX()) return Decision.of(new Move.StepBack(), track.head(s));
+        if (ball.x() < k.spotX(strong) - k.toleranceX()) {
+            if (Double.isNaN(backSince)) { backSince = s.gameTime(); backBallX = ball.x(); }
+            // A ball caught at the feet comes back with each step: in a game against UT Austin Villa (session 24) a
+            // player stepped back 12 s with the ball 8 cm in front of it and took it 3 m toward our goal. A side step
+            // away from the ball leaves it behind.
+            if (s.gameTime() - backSince > STUCK_SECONDS && ball.x() < backBallX + STUCK_GAIN)
+                return Decision.of(new Move.SideStep(ball.y() < 0), track.head(s));
+            return Decision.of(new Move.StepBack(), track.head(s));
+        }
+        backSince = Double.NaN;
         double ey = ball.y() - k.spotY(strong, left);
         if (Math.abs(ey) > k.toleranceY()) return Decision.of(new Move.SideStep(ey > 0), track.head(s));
         return Decision.of(new Move.Walk(0, true), track.head(s));
     }
+
+    /** Stepping back this long, game s, ... */
+    private static final double STUCK_SECONDS = 1.0;
+    /** ... with the ball not this much farther than when it began (m), the ball is caught at the feet. */
+    private static final double STUCK_GAIN = 0.03;
+    private double backSince = Double.NaN, backBallX;
 
     @Override
     public boolean done(Situation s) {

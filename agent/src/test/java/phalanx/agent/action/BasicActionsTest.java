@@ -131,6 +131,24 @@ class BasicActionsTest {
     }
 
     @Test
+    void prepareForKickSideStepsAwayFromABallThatStaysCaughtAtItsFeetWhileItStepsBack() {
+        PrepareForKick p = new PrepareForKick(C);
+        // The ball 8 cm ahead, 6 cm right (the session 24 game): step back ...
+        assertEquals(new Move.StepBack(), p.decide(World.at(0, 0, 0).time(100.0).ballRel(0.08, -0.06).situation()).move());
+        assertEquals(new Move.StepBack(), p.decide(World.at(0, 0, 0).time(100.9).ballRel(0.08, -0.06).situation()).move());
+        // ... and after a second with the ball still there, a side step away from it (left: the ball is right).
+        assertEquals(new Move.SideStep(true), p.decide(World.at(0, 0, 0).time(101.1).ballRel(0.09, -0.06).situation()).move());
+        // A ball that does come away with the steps is stepped back from as before.
+        PrepareForKick q = new PrepareForKick(C);
+        q.decide(World.at(0, 0, 0).time(200.0).ballRel(0.05, 0.04).situation());
+        assertEquals(new Move.StepBack(), q.decide(World.at(0, 0, 0).time(201.2).ballRel(0.10, 0.04).situation()).move());
+        // Once the ball is out of the back band the count starts again.
+        q.decide(World.at(0, 0, 0).time(201.3).ballRel(0.25, -0.06).situation());
+        assertEquals(new Move.StepBack(), q.decide(World.at(0, 0, 0).time(201.4).ballRel(0.08, 0.04).situation()).move());
+        assertEquals(new Move.SideStep(false), q.decide(World.at(0, 0, 0).time(202.5).ballRel(0.08, 0.04).situation()).move());
+    }
+
+    @Test
     void prepareForKickTakesTheFootOnTheBallsSideAndItsMirroredSpot() {
         PrepareForKick p = new PrepareForKick(C);
         // Ball 4 cm left of the body's axis when preparing begins: the left foot, whose spot is 0.055 m left.
