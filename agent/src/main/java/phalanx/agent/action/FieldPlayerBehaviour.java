@@ -100,7 +100,7 @@ public final class FieldPlayerBehaviour {
     }
 
     /**
-     * At FINE (off by default; a logging config sets this class to FINE, match/README.md): On Ball's state, the move and
+     * At FINE (off by default; a logging config sets this class to FINE, agent/README.md "Reading a game's player logs"): On Ball's state, the move and
      * whether the charging guard slowed it, the ball and the nearest opponent (own frame), ten times a game second.
      * For a match review of a player near the ball that does not get to it; nothing is built otherwise.
      */

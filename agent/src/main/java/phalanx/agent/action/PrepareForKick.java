@@ -14,7 +14,8 @@ import phalanx.model.field.Vector2;
  * steps across to the right foot; the left foot's spot is the right one's mirror. Sideways first (a forward step with the ball
  * off to the side would push it away), then forward. Ours, beyond the thesis: a ball nearer than
  * the spot's band (at the feet) is not kicked off the shin; the robot steps back first (a side step
- * there would push the ball with the foot), and side-steps away from a ball that stays caught at its feet while it steps back. The forward steps go on until the ball is within
+ * there would push the ball with the foot), and side-steps away from a ball that stays caught at
+ * its feet while it steps back. The forward steps go on until the ball is within
  * {@code toleranceFarX} beyond the spot, not just inside the band: the robot stops where it first
  * accepts the ball, so the far edge would be where every kick is played.
  */
