@@ -1,5 +1,7 @@
 package phalanx.agent;
 
+import phalanx.agent.team.TeamChannel;
+
 import phalanx.agent.decide.Decision;
 import phalanx.agent.decide.Situation;
 import phalanx.agent.roboviz.BeliefDrawing;
@@ -88,6 +90,9 @@ public final class PlayerRuntime {
         int unum = belief.unum() > 0 ? belief.unum() : options.unum();
         PlayerParts.Role role = parts.role(unum);
         String say = role == null ? null : role.channel().step(p.time(), playMode, p.hears(), belief);
+        if (role != null) {
+            for (TeamChannel.HeardBall h : role.channel().heardBalls()) parts.beliefs().teamBall(h.sender(), h.ball(), h.time());
+        }
         Decision d = role == null ? Decision.of(null, null) : role.brain().decide(s, role.channel());          // decide
 
         Pose2 beam = beams.beam(playMode, p.time(), unum);                                                  // act

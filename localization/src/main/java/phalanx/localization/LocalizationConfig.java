@@ -105,6 +105,13 @@ package phalanx.localization;
  *                             for a ball lying still, carried 1.7 m off) and then shows no motion
  * @param ballRollAgreeMps     the fixed part of that tolerance, m/s (0.5: ball sightings 3 vision frames apart are
  *                             within 2-3 cm, about 0.4 m/s)
+ * @param teamBallAfterSeconds  the ball belief falls back on the ball the teammates report (thesis 5.4's fusion of
+ *                             their "C" reports, heard on the team channel) once the own ball was last seen longer
+ *                             ago than this (1.0 s: the age under which a player reports its ball as seen,
+ *                             agent's Reports.BALL_FRESH_S); not in the thesis, which fuses the reports on the
+ *                             coordinator only (issue 19)
+ * @param teamBallMemorySeconds a teammate's report counts for this long after it was said (1.5 s: one round of reports
+ *                             is about 1 s with the default channel); not in the thesis
  */
 public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgreementMetres, double selfAgreementDeg,
                                  double ballAgreementMetres, PairWeighting pairWeighting, double fieldMarginMetres,
@@ -119,7 +126,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                                  int fallStuckCycles, int ballMissFrames, double ballMissViewDeg,
                                  double fifoFixSigmaMetres, double fifoFixSigmaDeg, double odometryErrorShare,
                                  boolean gyroTurn, double ballRollMinSpeed, double ballDecayPerSecond,
-                                 double ballRollAgreeShare, double ballRollAgreeMps) {
+                                 double ballRollAgreeShare, double ballRollAgreeMps,
+                                 double teamBallAfterSeconds, double teamBallMemorySeconds) {
 
     /** The self-localization filters the belief store can run. */
     public enum Filter { FIFO, EKF }
@@ -142,7 +150,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
             50, 150, 20, 5, 30, 0.05, 3, 50,
             3, 50,
             0.05, 0.2, 0.1,
-            true, 0.5, 1.06, 0.5, 0.5);
+            true, 0.5, 1.06, 0.5, 0.5,
+            1.0, 1.5);
 
     public LocalizationConfig {
         if (filter == null || pairWeighting == null) throw new IllegalArgumentException("filter and pairWeighting are required");
@@ -154,6 +163,8 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
         if (!(accSmoothing > 0 && accSmoothing <= 1)) throw new IllegalArgumentException("accSmoothing must be in (0, 1]");
         if (!(fallBackMinDeg >= 0 && fallBackMinDeg < 90)) throw new IllegalArgumentException("fallBackMinDeg must be in [0, 90), got " + fallBackMinDeg);
         if (ballMissFrames < 0 || !(ballMissViewDeg > 0 && ballMissViewDeg < 90)) throw new IllegalArgumentException("ballMissFrames must be >= 0 and ballMissViewDeg in (0, 90)");
+        if (!(teamBallAfterSeconds >= 0) || !(teamBallMemorySeconds >= 0))
+            throw new IllegalArgumentException("teamBallAfterSeconds and teamBallMemorySeconds must be >= 0");
         if (relocateFrames < 1 || fallConfirmCycles < 1 || fallTiltCycles < 1 || fallStuckCycles < 1) throw new IllegalArgumentException("frame and cycle counts must be at least 1");
     }
 
@@ -163,7 +174,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
     }
 
     /** The same with other relocation constants (k frames, far metres and degrees, spread metres and degrees). */
@@ -173,7 +184,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 deg, spreadMetres, spreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
     }
 
     /**
@@ -186,7 +197,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, metres, share, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
     }
 
     /** The same with another ball-miss rule (frames in a row, 0 = off; view half-angle in degrees). */
@@ -196,7 +207,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                frames, viewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+                frames, viewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
     }
 
     /** The same with another FIFO motion weighting (fix sigmas, odometry share; NaN share: Algorithm 1's plain mean). */
@@ -206,7 +217,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, sigmaMetres, sigmaDeg, share, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+                ballMissFrames, ballMissViewDeg, sigmaMetres, sigmaDeg, share, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
     }
 
     /** The same with the gyro's turn (true) or the odometry's (false) moving the self belief between fixes. */
@@ -216,7 +227,18 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyro, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyro, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
+    }
+
+    /** The same with another fall-back on the teammates' ball (own ball older than afterSeconds; reports kept memorySeconds). */
+    public LocalizationConfig withTeamBall(double afterSeconds, double memorySeconds) {
+        return new LocalizationConfig(filter, fifoMaxSize, selfAgreementMetres, selfAgreementDeg, ballAgreementMetres,
+                pairWeighting, fieldMarginMetres, ekfPositionNoise, ekfAngleNoiseDeg, relocateFrames, relocateMetres,
+                relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
+                trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
+                fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn,
+                ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, afterSeconds, memorySeconds);
     }
 
     /** The same with another ball prediction (minimum speed, +Infinity: off; drag per second; agreement share and m/s). */
@@ -227,7 +249,7 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
                 ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn,
-                minSpeed, decayPerSecond, agreeShare, agreeMps);
+                minSpeed, decayPerSecond, agreeShare, agreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
     }
 
     public LocalizationConfig withPairWeighting(PairWeighting w) {
@@ -236,6 +258,6 @@ public record LocalizationConfig(Filter filter, int fifoMaxSize, double selfAgre
                 relocateDeg, relocateSpreadMetres, relocateSpreadDeg, relocateResidualMetres, relocateResidualShare, trackSetSize,
                 trackDelay, fusionClusterMetres, fusionWeightExponent, fallTiltDeg, fallGyroDegPerSec,
                 fallSupportNewtons, fallConfirmCycles, fallBackMinDeg, accSmoothing, fallTiltCycles, fallStuckCycles,
-                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps);
+                ballMissFrames, ballMissViewDeg, fifoFixSigmaMetres, fifoFixSigmaDeg, odometryErrorShare, gyroTurn, ballRollMinSpeed, ballDecayPerSecond, ballRollAgreeShare, ballRollAgreeMps, teamBallAfterSeconds, teamBallMemorySeconds);
     }
 }

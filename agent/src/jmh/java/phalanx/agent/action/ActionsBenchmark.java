@@ -69,7 +69,7 @@ public class ActionsBenchmark {
         others.set(0, player("Them", 1, t, self, new Vector2(1.6, -0.5)));
         others.set(1, player("Them", 2, t, self, new Vector2(0.8, 0.9)));
         WorldBelief b = new WorldBelief(t, Side.LEFT, 5, self, 0.9, 0.02, self.toRelative(ball), ball, 0.02, velocity,
-                List.copyOf(mates), List.copyOf(others), FallState.STANDING);
+                List.copyOf(mates), List.copyOf(others), FallState.STANDING, false);
         return new Situation(t, (long) (t / 0.02), PlayMode.PLAY_ON, t, b, FieldSpec.V066, JointAngles.none(),
                 Situation.MotionStatus.IDLE);
     }

@@ -24,11 +24,17 @@ public final class Facts {
         return b.ballAge() <= c.beliefs().ballLostSeconds() ? b.ballRelative() : null;
     }
 
-    /** The ball relative to the body when seen just now (in view), else null. */
+    /** The ball relative to the body when seen just now (in view; a ball heard from teammates is not), else null. */
     public static Vector2 ballInView(Situation s, AgentConfig c) {
         WorldBelief b = s.belief();
-        if (b == null || b.ballRelative() == null || !b.ballRelative().isFinite()) return null;
+        if (b == null || b.ballHeard() || b.ballRelative() == null || !b.ballRelative().isFinite()) return null;
         return b.ballAge() <= c.beliefs().ballFreshSeconds() ? b.ballRelative() : null;
+    }
+
+    /** True when the ball belief is the teammates' report, not own sight (WorldBelief.ballHeard). */
+    public static boolean ballHeard(Situation s) {
+        WorldBelief b = s.belief();
+        return b != null && b.ballHeard();
     }
 
     /** The ball in the own frame when known and finite, else null. */

@@ -62,6 +62,12 @@ public final class OnBall implements Action {
         justKicked = false;
         Vector2 ball = Facts.ball(s, config);
         if (state != State.KICK && lost(ball)) state = State.WALK_TO_BALL;
+        // A ball only heard from teammates (issue 19) is walked to, and looked at, until own sight takes over: no
+        // kick or dribble on a report up to 1.5 s old.
+        if (state != State.KICK && ball != null && Facts.ballHeard(s)) {
+            state = State.WALK_TO_BALL;
+            return walk.decide(s);
+        }
         // Each state either acts or hands over to the next one in the same cycle; at most once round.
         for (int i = 0; i < State.values().length + 1; i++) {
             switch (state) {

@@ -22,7 +22,8 @@ public final class Reports {
     public static TeamMessage.Report of(int unum, WorldBelief b) {
         if (b == null || b.fall().isDown()) return new TeamMessage.Unaware(unum, b != null);
         boolean self = b.knowsSelf(SELF_FRESH_S);
-        boolean ball = b.ballAge() <= BALL_FRESH_S && b.ballRelative() != null;
+        // A ball heard from teammates is not reported back as seen: the coordinator would fuse it as one more sighting.
+        boolean ball = !b.ballHeard() && b.ballAge() <= BALL_FRESH_S && b.ballRelative() != null;
         if (self && ball && b.ballGlobal() != null) {
             Pose2 s = b.self();
             return new TeamMessage.Complete(unum, s.x(), s.y(), s.thetaDeg(), b.ballGlobal().x(), b.ballGlobal().y());

@@ -10,8 +10,11 @@ import phalanx.comm.team.round.CoordinatorRounds;
 import phalanx.comm.team.round.FieldPlayerRounds;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.team.TimeSlices;
+import phalanx.comm.team.TeamMessage;
 import phalanx.localization.belief.WorldBelief;
+import phalanx.model.field.Vector2;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.logging.Logger;
 
@@ -27,6 +30,11 @@ public final class TeamChannel {
     private final FieldPlayerRounds fieldPlayer;   // players 2..n
     private final int unum;
     private final RoundPlanner procedure;   // player 1
+    /** The teammates' ball reports heard in the last step (issue 19). */
+    private final List<HeardBall> heardBalls = new ArrayList<>();
+
+    /** A teammate's ball, in the own frame, said at server time {@code time}. */
+    public record HeardBall(int sender, Vector2 ball, double time) {}
 
     private TeamChannel(CoordinatorRounds coordinator, FieldPlayerRounds fieldPlayer, int unum, RoundPlanner procedure) {
         this.coordinator = coordinator;
@@ -51,7 +59,11 @@ public final class TeamChannel {
         long cycle = TimeSlices.cycleOf(serverTime);
         ChannelOutput out = coordinator != null ? coordinator.step(cycle, mode, heard)
                 : fieldPlayer.step(cycle, mode, heard, () -> Reports.of(unum, belief));
+        heardBalls.clear();
         for (ChannelEvent e : out.events()) {
+            if (e instanceof ChannelEvent.ReportHeard h && h.report() instanceof TeamMessage.Complete c) {
+                heardBalls.add(new HeardBall(c.sender(), new Vector2(c.ballX(), c.ballY()), h.saidCycle() / 50.0));
+            }
             // Round boundaries at INFO (a few lines a second on the goalkeeper: the data for the
             // channel's real-server figures); the rest at FINE.
             if (e instanceof ChannelEvent.ReportsComplete || e instanceof ChannelEvent.ActionsDispatched
@@ -63,6 +75,9 @@ public final class TeamChannel {
         }
         return out.say();
     }
+
+    /** The teammates' ball reports ("C") heard in the last step, for the ball belief (BeliefStore.teamBall). */
+    public List<HeardBall> heardBalls() { return heardBalls; }
 
     /** The coordinator's last order to this field player, or null (none yet, or on the goalkeeper). */
     public Action order() { return fieldPlayer == null ? null : fieldPlayer.currentAction(); }

@@ -87,7 +87,7 @@ class BadInputTest {
                 World.at(0, 0, 0).ballRel(0.2, 0).belief(), null, null, null));
         m.put("null player lists and fall", new Situation(10, 500, PlayMode.PLAY_ON, 10,
                 new WorldBelief(10, null, 0, new Pose2(0, 0, 0), 1, 0, new Vector2(0.2, 0), new Vector2(0.2, 0), 0,
-                        new Vector2(-1, 0), null, null, null), FieldSpec.V066, JointAngles.none(), null));
+                        new Vector2(-1, 0), null, null, null, false), FieldSpec.V066, JointAngles.none(), null));
         return m;
     }
 

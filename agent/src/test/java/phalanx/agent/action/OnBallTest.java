@@ -51,6 +51,24 @@ class OnBallTest {
         assertEquals(OnBall.State.WALK_TO_BALL, a.state());
     }
 
+    /** A ball only heard from teammates (issue 19) is walked to and looked at, never kicked or dribbled blind. */
+    @Test
+    void aHeardBallIsWalkedToAndNotKicked() {
+        OnBall a = new OnBall(C);
+        // Facing the goal, the ball reported 0.25 m ahead: seen, this would be PREPARE (goesThroughItsStatesInOrder, 4.).
+        World w = World.at(0, 0, 0).ballRel(0.25, -0.055).heard(0.4).time(14);
+        var d = a.decide(w.situation());
+        assertEquals(OnBall.State.WALK_TO_BALL, a.state());
+        assertEquals(Move.STAND, d.move(), "at the reported ball: stand and look");
+        assertTrue(d.head().pitchDeg() < -30, "the head looks down at the reported spot: " + d.head());
+        // Reported 3 m ahead: walked to.
+        assertEquals(new Move.Walk(0, false), new OnBall(C).decide(World.at(0, 0, 0).ballRel(3, -0.055).heard(0.4).time(14).situation()).move());
+        // Seen there: PREPARE as usual.
+        OnBall seen = new OnBall(C);
+        seen.decide(World.at(0, 0, 0).ballRel(0.25, -0.055).time(14).situation());
+        assertEquals(OnBall.State.PREPARE, seen.state());
+    }
+
     @Test
     void dribblesTowardTheGoalInsteadOfKickingWithinDribbleWithin() {
         AgentConfig dribbling = C.withKick(C.kick().withDribbleWithin(20));

@@ -22,6 +22,8 @@ public final class World {
     public double confidence = 0.9, selfAge = 0;
     public Vector2 ballRel, ballGlobal, ballVelocity;
     public double ballAge = Double.POSITIVE_INFINITY;
+    /** The ball fields are the teammates' report, not own sight (WorldBelief.ballHeard). */
+    public boolean ballHeard;
     public final List<PlayerBelief> mates = new ArrayList<>(), opponents = new ArrayList<>();
     public FallState fall = FallState.STANDING;
     public Situation.MotionStatus motion = Situation.MotionStatus.IDLE;
@@ -59,6 +61,9 @@ public final class World {
         return this;
     }
 
+    /** The ball as the teammates report it (said {@code age} s ago), not seen. */
+    public World heard(double age) { ballHeard = true; ballAge = age; return this; }
+
     public World ballVelocity(double vx, double vy) { ballVelocity = new Vector2(vx, vy); return this; }
 
     public World teammateAt(int id, double x, double y) { mates.add(player("Phalanx", id, x, y)); return this; }
@@ -83,7 +88,7 @@ public final class World {
 
     public WorldBelief belief() {
         return new WorldBelief(now, Side.LEFT, 5, self, confidence, selfAge, ballRel, ballGlobal, ballAge, ballVelocity,
-                List.copyOf(mates), List.copyOf(opponents), fall);
+                List.copyOf(mates), List.copyOf(opponents), fall, ballHeard);
     }
 
     public Situation situation() {

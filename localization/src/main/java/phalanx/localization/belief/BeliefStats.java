@@ -6,7 +6,7 @@ package phalanx.localization.belief;
  */
 public final class BeliefStats {
     long cycles, visionFrames, selfFixes, selfUpdates, noVision, noLandmark, oneLandmark, badPolar,
-            playerWithoutId, fallenFrames, noSide, selfStarts, ballsMissed;
+            playerWithoutId, fallenFrames, noSide, selfStarts, ballsMissed, staleBallCycles, heardBallCycles, heardBallsMissed;
 
     public long cycles() { return cycles; }
     /** Cycles that carried a See. */
@@ -22,6 +22,12 @@ public final class BeliefStats {
     public long selfStarts() { return selfStarts; }
     /** Times the ball belief was dropped because the ball was not seen where it was believed, in view (LocalizationConfig.ballMissFrames). */
     public long ballsMissed() { return ballsMissed; }
+    /** Cycles with a self pose whose own ball was last seen more than teamBallAfterSeconds ago, or never. */
+    public long staleBallCycles() { return staleBallCycles; }
+    /** Cycles whose ball belief was the teammates' (the own ball stale; LocalizationConfig.teamBallAfterSeconds). */
+    public long heardBallCycles() { return heardBallCycles; }
+    /** Times the teammates' ball was dropped: it lay in view and was not seen (as ballsMissed). */
+    public long heardBallsMissed() { return heardBallsMissed; }
     public long noVision() { return noVision; }
     public long noLandmark() { return noLandmark; }
     public long oneLandmark() { return oneLandmark; }
@@ -40,6 +46,7 @@ public final class BeliefStats {
         return "cycles=" + cycles + " vision=" + visionFrames + " fixes=" + selfFixes + " updates=" + selfUpdates
                 + " no_vision=" + noVision + " no_landmark=" + noLandmark + " one_landmark=" + oneLandmark
                 + " bad_polar=" + badPolar + " player_without_id=" + playerWithoutId
-                + " fallen_frames=" + fallenFrames + " no_side=" + noSide + " self_starts=" + selfStarts + " balls_missed=" + ballsMissed;
+                + " fallen_frames=" + fallenFrames + " no_side=" + noSide + " self_starts=" + selfStarts + " balls_missed=" + ballsMissed
+                + " stale_ball_cycles=" + staleBallCycles + " heard_ball_cycles=" + heardBallCycles + " heard_balls_missed=" + heardBallsMissed;
     }
 }

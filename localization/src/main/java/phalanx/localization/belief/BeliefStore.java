@@ -22,6 +22,7 @@ import phalanx.localization.filter.EkfPoseFilter;
 import phalanx.localization.filter.FifoPoseFilter;
 import phalanx.localization.filter.LocalizationFilter;
 import phalanx.localization.filter.PoseFilter;
+import phalanx.localization.team.BallFusion;
 import phalanx.localization.tracking.MovingObjectTracker;
 import phalanx.localization.vision.LandmarkSighting;
 import phalanx.localization.vision.SelfLocalizer;
@@ -75,6 +76,18 @@ public final class BeliefStore {
     /** Steady vision frames in a row with the believed ball in view and no ball seen. */
     private int ballMisses;
     private Vector2 ballRelative;
+    /** Each teammate's last reported ball (own frame) and when it was said; see {@link #teamBall}. */
+    private final Vector2[] heardBalls = new Vector2[MAX_ID + 1];
+    private final double[] heardTimes = new double[MAX_ID + 1];
+    private final List<Vector2> heardRecent = new ArrayList<>(MAX_ID);
+    private final BallFusion heardFusion;
+    /** This cycle's fusion of the recent reports (null: none), and the newest report's time among them. */
+    private Vector2 heardBall;
+    private double heardTime = Double.NEGATIVE_INFINITY;
+    /** Reports said before this time are void: their ball lay in view and was not there (heardMissed). */
+    private double heardVoidBefore = Double.NEGATIVE_INFINITY;
+    /** Steady vision frames in a row with the heard ball in view and no ball seen. */
+    private int heardMisses;
     private List<PlayerBelief> mateList = List.of(), otherList = List.of();
     private WorldBelief belief;
 
@@ -99,6 +112,7 @@ public final class BeliefStore {
                 config.ballAgreementMetres(), Double.NaN, config.relocateSpreadMetres(), Double.NaN);
         ballTracker = new MovingObjectTracker(config.trackSetSize(), config.trackDelay(), 1.0);
         fallDetector = new FallDetector(config);
+        heardFusion = new BallFusion(config.fusionClusterMetres(), config.fusionWeightExponent());
         tilt = new TiltEstimator(config.accSmoothing(), STEADY_TOLERANCE);
         belief = snapshot(FallState.STANDING);
     }
@@ -112,6 +126,19 @@ public final class BeliefStore {
         odoForward += forward;
         odoLeft += left;
         odoTurn += turnDeg;
+    }
+
+    /**
+     * A teammate's report of the ball (thesis 5.3's "C": his own sighting, in the own frame) and the server time it was
+     * said. The reports heard within {@code teamBallMemorySeconds} are fused as the coordinator fuses them (thesis 5.4,
+     * {@link BallFusion}), and the belief falls back on that ball while the own ball was last seen more than
+     * {@code teamBallAfterSeconds} ago (issue 19). A heard ball that lies in view for ballMissFrames frames without being
+     * seen voids the reports said so far, as an own ball would be dropped. Bad sender, null or non-finite: ignored.
+     */
+    public void teamBall(int sender, Vector2 ownFrame, double saidTime) {
+        if (sender < 1 || sender > MAX_ID || ownFrame == null || !ownFrame.isFinite() || !Double.isFinite(saidTime)) return;
+        heardBalls[sender] = ownFrame;
+        heardTimes[sender] = saidTime;
     }
 
     /** Forgets the self and ball beliefs (for example after the agent was moved by a beam). */
@@ -173,9 +200,12 @@ public final class BeliefStore {
             ballVy *= decay;
         }
 
+        fuseHeard();
         if (p.hasVision()) see(p, fall);
         else stats.noVision++;
         belief = snapshot(fall);
+        if (belief.self() != null && (belief.ballHeard() || !(belief.ballAge() <= config.teamBallAfterSeconds()))) stats.staleBallCycles++;
+        if (belief.ballHeard()) stats.heardBallCycles++;
         return belief;
     }
 
@@ -247,8 +277,14 @@ public final class BeliefStore {
             stats.ballsMissed++;
             dropBall();
         }
+        if (ball == null && heardMissed(camera, self, steady)) {
+            stats.heardBallsMissed++;
+            heardVoidBefore = time;
+            heardBall = null;
+        }
         if (ball != null) {
             ballMisses = 0;
+            heardMisses = 0;
             if (!ball.isUsable()) stats.badPolar++;
             else {
                 ballRelative = camera.toGround(ball);
@@ -315,6 +351,39 @@ public final class BeliefStore {
         return true;
     }
 
+    /** The same rule as {@link #missed} for the teammates' ball while the belief falls back on it. */
+    private boolean heardMissed(CameraPose camera, Pose2 self, boolean steady) {
+        int frames = config.ballMissFrames();
+        if (frames <= 0 || !steady || self == null || !usesHeardBall()) return false;
+        if (!camera.inView(self.toRelative(heardBall), BALL_CENTRE_HEIGHT, config.ballMissViewDeg())) return false;
+        if (++heardMisses < frames) return false;
+        heardMisses = 0;
+        return true;
+    }
+
+    /** This cycle's teammates' ball: the fusion of the reports said within the memory, after the last void. */
+    private void fuseHeard() {
+        heardRecent.clear();
+        heardTime = Double.NEGATIVE_INFINITY;
+        double now = Double.isNaN(time) ? 0 : time;
+        for (int u = 1; u <= MAX_ID; u++) {
+            if (heardBalls[u] == null || heardTimes[u] < heardVoidBefore || now - heardTimes[u] > config.teamBallMemorySeconds()) continue;
+            heardRecent.add(heardBalls[u]);
+            heardTime = Math.max(heardTime, heardTimes[u]);
+        }
+        Vector2 fused = heardRecent.isEmpty() ? null : heardFusion.fuse(heardRecent);
+        // a new report moves the fusion a little; only a ball believed elsewhere starts the miss count again
+        if (fused == null || heardBall == null || fused.distanceTo(heardBall) > config.ballAgreementMetres()) heardMisses = 0;
+        heardBall = fused;
+    }
+
+    /** The own ball is stale and a heard one is recent enough (and newer than the own sighting). */
+    private boolean usesHeardBall() {
+        double now = Double.isNaN(time) ? 0 : time;
+        return heardBall != null && now - ballTime > config.teamBallAfterSeconds()
+                && now - heardTime <= config.teamBallMemorySeconds() && heardTime > ballTime;
+    }
+
     private boolean seePlayer(SeenPlayer sp, CameraPose camera, Pose2 self) {
         if (sp.id() <= 0 || sp.id() > MAX_ID) { stats.playerWithoutId++; return false; }
         boolean mate = teamName.equals(sp.team());
@@ -352,8 +421,13 @@ public final class BeliefStore {
         // With a self belief the filtered ball is the better relative estimate too.
         if (ballGlobal != null) rel = self.toRelative(ballGlobal);
         double now = Double.isNaN(time) ? 0 : time;
+        if (self != null && usesHeardBall()) {
+            // The own ball is stale: the teammates' (issue 19, thesis 5.4). No velocity: a report carries none.
+            return new WorldBelief(time, side, unum, self, selfFilter.confidence(), now - selfTime,
+                    self.toRelative(heardBall), heardBall, now - heardTime, null, mateList, otherList, fall, true);
+        }
         return new WorldBelief(time, side, unum, self, selfFilter.confidence(), now - selfTime,
                 rel, ballGlobal, now - ballTime, ballGlobal == null ? null : ballTracker.velocity(),
-                mateList, otherList, fall);
+                mateList, otherList, fall, false);
     }
 }

@@ -22,10 +22,14 @@ import java.util.List;
  * @param teammates       teammates seen, with their age; not the agent itself
  * @param opponents       opponents seen
  * @param fall            Stand Up's fall state (thesis 4.6)
+ * @param ballHeard       the ball fields come from the teammates' reports (thesis 5.4), not from own sight: the own
+ *                        ball was not seen for LocalizationConfig.teamBallAfterSeconds; ballAge is then the age of
+ *                        the reports and ballVelocity null. Never reported onward as seen (agent's Reports)
  */
 public record WorldBelief(double time, Side side, int unum, Pose2 self, double selfConfidence, double selfAge,
                           Vector2 ballRelative, Vector2 ballGlobal, double ballAge, Vector2 ballVelocity,
-                          List<PlayerBelief> teammates, List<PlayerBelief> opponents, FallState fall) {
+                          List<PlayerBelief> teammates, List<PlayerBelief> opponents, FallState fall,
+                          boolean ballHeard) {
 
     /** True when the self belief exists and vision refreshed it within the given seconds. */
     public boolean knowsSelf(double maxAgeSeconds) { return self != null && selfAge <= maxAgeSeconds; }

@@ -1,6 +1,7 @@
 package phalanx.comm.team.round;
 
 import phalanx.comm.team.Action;
+import phalanx.comm.team.TeamMessage;
 import java.util.List;
 
 /** What happened on the team channel in one step, for the agent and the logs (one line each). */
@@ -29,6 +30,13 @@ public sealed interface ChannelEvent {
 
     /** CoordinatorRounds: the play mode changed mid-round; the round is dropped and a new one starts. */
     record RoundAborted(int round, long cycle) implements ChannelEvent {
+    }
+
+    /**
+     * Both: a teammate's report was heard (said in {@code saidCycle}). Every player hears the others' reports; a
+     * field player uses their ball when it has lost its own (issue 19).
+     */
+    record ReportHeard(TeamMessage.Report report, long saidCycle, long cycle) implements ChannelEvent {
     }
 
     /** Field player: the coordinator assigned this action; execute it until the next one. */

@@ -151,6 +151,7 @@ public final class CoordinatorRounds {
             missed[u] = 0;
             events = add(events, new ChannelEvent.PlayerJoined(u, cycle));
         }
+        if (d.message() instanceof TeamMessage.Report r) events = add(events, new ChannelEvent.ReportHeard(r, d.saidCycle(), cycle));
         if (d.message() instanceof TeamMessage.Report r && phase == Phase.REPORTS
                 && d.saidCycle() == firstReport + (long) config.reportSlot(u) * config.slotCycles()) {
             reports[u] = r;

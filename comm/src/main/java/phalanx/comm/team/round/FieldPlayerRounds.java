@@ -125,6 +125,7 @@ public final class FieldPlayerRounds {
         TeamMessage m = d.message();
         long slot = config.slotCycles();
         if (m instanceof TeamMessage.Report || m instanceof TeamMessage.Actions) lastRoundTraffic = cycle;
+        if (m instanceof TeamMessage.Report r && r.sender() != self) events = add(events, new ChannelEvent.ReportHeard(r, d.saidCycle(), cycle));
         long firstReport;
         if (m instanceof TeamMessage.Start s && s.sender() == config.coordinator()) {
             firstReport = d.saidCycle() + slot;

@@ -59,6 +59,28 @@ class FieldPlayerRoundsTest {
         assertTrue(asked.isEmpty());
     }
 
+    /** Every teammate's report is heard by all: a field player passes them on (their ball is its fall-back, issue 19). */
+    @Test
+    void aTeammatesReportIsPassedOnAndItsOwnIsNot() {
+        FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, KEY, TEAM);
+        List<ChannelEvent> ev = new ArrayList<>();
+        TeamMessage.Complete mate = new TeamMessage.Complete(7, -3.0, 1.0, 45, 2.0, -1.0);
+        run(p, 0, 12, Map.of(10L, List.of(new Hear(TEAM, 0, false, 30, ours.encode(mate, 8)))), ev);
+        assertEquals(1, ev.size(), ev.toString());
+        var heard = (ChannelEvent.ReportHeard) ev.get(0);
+        assertEquals(8, heard.saidCycle());
+        assertEquals(10, heard.cycle());
+        var c = (TeamMessage.Complete) heard.report();
+        assertEquals(7, c.sender());
+        assertEquals(2.0, c.ballX(), 0.021);
+        assertEquals(-1.0, c.ballY(), 0.021);
+        // A foreign team's text and the player's own number are not passed on.
+        ev.clear();
+        run(p, 13, 20, Map.of(14L, List.of(new Hear("Them", 0, false, 30, ours.encode(mate, 12))),
+                16L, List.of(new Hear(TEAM, 0, false, 30, ours.encode(new TeamMessage.Location(4, 1, 1, 0), 14)))), ev);
+        assertTrue(ev.stream().noneMatch(e -> e instanceof ChannelEvent.ReportHeard), ev.toString());
+    }
+
     @Test
     void reportsInItsSlotAfterStartThenTakesItsActionAndKnowsTheNextRound() {
         FieldPlayerRounds p = new FieldPlayerRounds(ChannelConfig.DEFAULT, 4, KEY, TEAM);
