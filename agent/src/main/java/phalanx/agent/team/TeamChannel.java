@@ -37,6 +37,7 @@ public final class TeamChannel {
     private final List<HeardBall> heardBalls = new ArrayList<>();
     private final List<TeamMessage.Report> heardReports = new ArrayList<>();
     private long rounds, reportsInRounds, actionsDispatched, actionsReceived;
+    private int lastRoundHeard;
 
     /** A teammate's ball, in the own frame, said at server time {@code time}. */
     public record HeardBall(int sender, Vector2 ball, double time) {}
@@ -87,11 +88,12 @@ public final class TeamChannel {
             if (e instanceof ChannelEvent.ReportHeard h && h.report() instanceof TeamMessage.Complete c) {
                 heardBalls.add(new HeardBall(c.sender(), new Vector2(c.ballX(), c.ballY()), h.saidCycle() / 50.0));
             }
-            if (e instanceof ChannelEvent.ActionsDispatched d) {
+            if (e instanceof ChannelEvent.ReportsComplete r) {
+                lastRoundHeard = r.heard();   // counted once its actions are out: a play-mode change may drop the round
+            } else if (e instanceof ChannelEvent.ActionsDispatched d) {
                 rounds++;
+                reportsInRounds += lastRoundHeard;
                 actionsDispatched += d.actions();
-            } else if (e instanceof ChannelEvent.ReportsComplete r) {
-                reportsInRounds += r.heard();
             } else if (e instanceof ChannelEvent.ActionReceived) {
                 actionsReceived++;
             }
@@ -113,7 +115,7 @@ public final class TeamChannel {
     /** Every teammate report (C, L, B, X) heard in the last step. */
     public List<TeamMessage.Report> heardReports() { return heardReports; }
 
-    /** On the coordinator: rounds whose actions were all said, the reports those rounds gathered, the actions sent. */
+    /** On the coordinator: rounds whose actions were all said, the reports those rounds heard, the actions sent. */
     public long rounds() { return rounds; }
     public long reportsInRounds() { return reportsInRounds; }
     public long actionsDispatched() { return actionsDispatched; }
