@@ -11,7 +11,7 @@ import phalanx.coordination.beliefs.GlobalBeliefs;
 import phalanx.coordination.beliefs.PlayerBelief;
 import phalanx.coordination.beliefs.TeamBeliefs;
 import phalanx.coordination.formation.Formation;
-import phalanx.coordination.formation.FormationGenerator;
+import phalanx.coordination.formation.FormationSource;
 import phalanx.coordination.formation.Role;
 import phalanx.coordination.formation.RoleAssignment;
 import phalanx.coordination.subsets.Subset;
@@ -30,6 +30,7 @@ import phalanx.model.field.Vector2;
 public final class CoordinationRun {
     private final CoordinationConfig config;
     private final SupportMapper supportMapper;
+    private final FormationSource formations;
     private final TeamBeliefs input;
     private final Mode mode;
     private final Memory previous;
@@ -44,11 +45,12 @@ public final class CoordinationRun {
     private TeamPlan plan;
     private int done;
 
-    CoordinationRun(CoordinationConfig config, SupportMapper supportMapper, TeamBeliefs input, Mode mode,
-                    Memory previous) {
+    CoordinationRun(CoordinationConfig config, SupportMapper supportMapper, FormationSource formations, TeamBeliefs input,
+                    Mode mode, Memory previous) {
         if (input == null || mode == null) throw new IllegalArgumentException("beliefs and mode are needed");
         this.config = config;
         this.supportMapper = supportMapper;
+        this.formations = formations;
         this.input = input;
         this.mode = mode;
         this.previous = previous == null ? Memory.NONE : previous;
@@ -112,7 +114,7 @@ public final class CoordinationRun {
     /** Phase 5, "Generate Team Formation", "Assign Team Roles", "Determine Support Positions" (5.9-5.11). */
     public void formationRolesAndSupportPositions() {
         step(5);
-        formation = FormationGenerator.generate(beliefs.ball(), beliefs.field(), config.formation());
+        formation = formations.generate(beliefs.ball(), beliefs.field());
         roles = RoleAssignment.assign(formation, beliefs.ball(), new ArrayList<>(activeTargets.values()),
                 subsets.support().size());
     }

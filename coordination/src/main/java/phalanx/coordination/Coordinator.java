@@ -1,6 +1,8 @@
 package phalanx.coordination;
 
 import phalanx.coordination.beliefs.TeamBeliefs;
+import phalanx.coordination.formation.FormationGenerator;
+import phalanx.coordination.formation.FormationSource;
 import phalanx.coordination.support.DynamicProgrammingSupportMapper;
 import phalanx.coordination.support.SupportMapper;
 
@@ -12,11 +14,20 @@ import phalanx.coordination.support.SupportMapper;
 public final class Coordinator {
     private final CoordinationConfig config;
     private final SupportMapper supportMapper;
+    private final FormationSource formations;
 
+    /** With the thesis formation generator (5.9) for the field of the round's beliefs. */
     public Coordinator(CoordinationConfig config, SupportMapper supportMapper) {
-        if (config == null || supportMapper == null) throw new IllegalArgumentException("config and support mapper are needed");
+        this(config, supportMapper, config == null ? null : (ball, field) -> FormationGenerator.generate(ball, field, config.formation()));
+    }
+
+    /** With another formation (rcssservermj: {@link phalanx.coordination.formation.StretchedFormation}). */
+    public Coordinator(CoordinationConfig config, SupportMapper supportMapper, FormationSource formations) {
+        if (config == null || supportMapper == null || formations == null)
+            throw new IllegalArgumentException("config, support mapper and formation source are needed");
         this.config = config;
         this.supportMapper = supportMapper;
+        this.formations = formations;
     }
 
     /** The thesis's constants and its support mapping (Algorithm 5). */
@@ -41,6 +52,6 @@ public final class Coordinator {
 
     /** A round whose phases the caller runs one by one (see {@code schedule.CoordinationSchedule}). */
     public CoordinationRun start(TeamBeliefs beliefs, Mode mode, Memory previous) {
-        return new CoordinationRun(config, supportMapper, beliefs, mode, previous);
+        return new CoordinationRun(config, supportMapper, formations, beliefs, mode, previous);
     }
 }

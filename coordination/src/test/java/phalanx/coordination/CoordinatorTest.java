@@ -11,8 +11,11 @@ import org.junit.jupiter.api.Test;
 import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
 import phalanx.coordination.formation.Role;
+import phalanx.coordination.formation.StretchedFormation;
+import phalanx.coordination.support.DynamicProgrammingSupportMapper;
 import phalanx.coordination.subsets.Subset;
 import phalanx.model.field.FieldSpec;
+import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;
 
@@ -134,6 +137,25 @@ class CoordinatorTest {
         Set<Role> roles = EnumSet.noneOf(Role.class);
         for (Assignment a : plan.assignments()) roles.add(a.role());
         assertEquals(new HashSet<>(Role.forPlayers(9)), roles);
+    }
+
+    @Test
+    void sevenT1sOnRcssservermjsFieldTakeTheStretchedFormationsSpots() {
+        MjField mj = MjField.SSIM;
+        StretchedFormation stretched = new StretchedFormation(mj, coordinator.config().formation());
+        Coordinator onMj = new Coordinator(coordinator.config(), new DynamicProgrammingSupportMapper(), (ball, field) -> stretched.generate(ball));
+        Vector2 ball = new Vector2(-12, 5);
+        List<PlayerReport> r = new ArrayList<>();
+        for (int i = 1; i <= 7; i++) r.add(PlayerReport.complete(i, new Pose2(-26 + 4 * i, 3 * (i % 3) - 3, 0), ball));
+        TeamPlan plan = onMj.coordinate(new TeamBeliefs(mj.spec(), r), Mode.SUPPORT, Memory.NONE);
+        assertEquals(stretched.generate(ball), plan.formation());
+        Set<Role> roles = EnumSet.noneOf(Role.class);
+        for (Assignment a : plan.assignments()) {
+            roles.add(a.role());
+            assertEquals(stretched.generate(ball).position(a.role()), a.target(), "player " + a.id() + " goes to its role's stretched spot");
+        }
+        assertEquals(new HashSet<>(Role.forPlayers(7)), roles, "the 7 roles, none dropped");
+        assertTrue(plan.warnings().isEmpty(), "uniform numbers 1-7 on the 7-player field: " + plan.warnings());
     }
 
     @Test

@@ -1,5 +1,7 @@
 package phalanx.agent.mj;
 
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ActionId;
 import phalanx.coordination.CoordinationConfig;
 import phalanx.coordination.formation.Role;
 import phalanx.coordination.formation.StretchedFormation;
@@ -10,12 +12,14 @@ import phalanx.model.field.Vector2;
 import phalanx.motion.t1.T1KickConfig;
 
 /**
- * What a T1 player does on rcssservermj, as far as it goes today: beam to its kick-off spot while the referee
- * allows it, then the field player nearest the ball by the team's reports ({@link MjTeamTalk}) walks to the ball
- * and every other player to its spot of the thesis formation for the ball's place ({@link StretchedFormation}),
- * facing the ball. The player going to the ball walks to a spot behind it on the ball-to-goal line and, once there
- * and facing the goal, asks for a kick ({@link phalanx.motion.t1.T1Kick}) with the foot on the ball's side.
- * No thesis coordination rounds or get-up yet (issue 20).
+ * What a T1 player does on rcssservermj: beam to its kick-off spot while the referee allows it, then carry out the
+ * coordinator's order (thesis 5.3, {@link MjTeamTalk}): On Ball goes to the ball and kicks, Walk To Coordinate walks to
+ * the point and faces the ball, any other order (Look Straight while waiting for a kick-off, Turn To Localize for a
+ * player that was down) walks to its formation spot. Without an order (none yet, or the coordinator has gone quiet)
+ * the field player nearest the ball by the team's reports goes to it and every other player to its spot of the
+ * thesis formation for the ball's place ({@link StretchedFormation}), facing the ball. The player going to the ball
+ * walks to a spot behind it on the ball-to-goal line and, once there and facing the goal, asks for a kick
+ * ({@link phalanx.motion.t1.T1Kick}) with the foot on the ball's side.
  */
 final class MjBehaviour {
     /** Which foot kicks. */
@@ -71,13 +75,17 @@ final class MjBehaviour {
         return new Pose2(p.x(), p.y(), 0);
     }
 
-    /** As {@link #decide(MjWorld, boolean)} for a player alone: only the forward (FC) goes to the ball. */
+    /** As {@link #decide(MjWorld, Action, boolean)} for a player alone: no order, only the forward (FC) goes to the ball. */
     Intent decide(MjWorld w) {
-        return decide(w, role == Role.FC);
+        return decide(w, null, role == Role.FC);
     }
 
-    /** {@code nearest}: no team-mate reports himself nearer the ball ({@link MjTeamTalk#nearestToBall}). */
-    Intent decide(MjWorld w, boolean nearest) {
+    /**
+     * {@code order}: the coordinator's last order to this player, null when there is none (none yet, or the
+     * coordinator has gone quiet); {@code nearest}: no team-mate reports himself nearer the ball
+     * ({@link MjTeamTalk#nearestToBall}), the rule without an order.
+     */
+    Intent decide(MjWorld w, Action order, boolean nearest) {
         Pose2 self = w.self();
         if (self == null || w.side() == 0) return Intent.STAND;
         if (w.beamAllowed()) {
@@ -90,9 +98,15 @@ final class MjBehaviour {
         }
         if (!w.upright() || w.playMode().equals("GameOver")) return Intent.STAND;
         Vector2 ball = w.ball();
+        if (order != null && order.id() == ActionId.WALK_TO_COORDINATE) {
+            Vector2 target = new Vector2(order.x(), order.y());
+            // the coordinator's heading faces the ball it planned with; ours is fresher when we have one
+            return walkTo(self, target, ball != null ? ball : target.plus(Vector2.ofAngle(order.thetaDeg())));
+        }
         if (ball == null) return turnInPlace(self, 90);  // look around for it
         boolean kickOffTheirs = w.playMode().startsWith("KickOff") && !w.ours(w.playMode());
-        if (nearest && role != Role.GK && !kickOffTheirs) return kickToGoal(self, ball);
+        boolean toBall = order != null ? order.id() == ActionId.ON_BALL : nearest;
+        if (toBall && role != Role.GK && !kickOffTheirs) return kickToGoal(self, ball);
         return walkTo(self, formation.generate(ball).position(role), ball);
     }
 

@@ -42,10 +42,17 @@ public final class MjPlayer {
         Outcome out = play(o, runtime);
         String msg = "phalanx-player " + o.unum() + " (mj): " + out.reason() + " after " + out.cycles() + " cycles ("
                 + out.malformed() + " malformed messages skipped; " + runtime.getUps() + " get-ups, " + runtime.getUpRetries()
-                + " of them retries; " + runtime.kicks() + " kicks)";
+                + " of them retries; " + runtime.kicks() + " kicks; " + channel(runtime) + ")";
         LOG.info(msg);
         System.err.println(msg);
         return out.status();
+    }
+
+    /** The team channel's figures for the exit line: the coordinator's rounds, a field player's orders. */
+    private static String channel(MjRuntime r) {
+        var c = r.channel();
+        return r.unum() == phalanx.comm.team.ChannelConfig.MJ.coordinator() ? c.rounds() + " coordination rounds (" + c.reportsInRounds() + " reports heard, " + c.actionsDispatched()
+                + " actions sent)" : c.actionsReceived() + " orders received";
     }
 
     /** Plays until the connection ends or the game is over; never throws for bad input. */

@@ -23,7 +23,8 @@ import java.util.List;
 import java.util.logging.Logger;
 
 /**
- * One T1 player's cycle on rcssservermj: sense (parse) → model ({@link MjWorld}) → decide ({@link MjBehaviour})
+ * One T1 player's cycle on rcssservermj: sense (parse) → model ({@link MjWorld}) → decide (the team channel's rounds,
+ * {@link MjTeamTalk}; {@link MjBehaviour})
  * → act (the T1 gait's joint PD commands, the kick's while it plays, a beam when decided). Always answers, also to a message it cannot parse
  * (the last joint commands again), because an agent-sync server waits for every agent each cycle.
  */
@@ -58,8 +59,8 @@ public final class MjRuntime {
     public MjRuntime(String team, int unum, MjField field, TeamKey key, Path motionDir) throws MotionFileException {
         this.getUp = T1GetUp.load(motionDir, T1GaitConfig.balanced().dt());
         this.unum = unum;
-        this.talk = new MjTeamTalk(key, unum, field.players());
         this.world = new MjWorld(team);
+        this.talk = new MjTeamTalk(key, team, unum, field, world);
         this.behaviour = new MjBehaviour(field, unum, MjBehaviour.Config.DEFAULT);
     }
 
@@ -83,14 +84,13 @@ public final class MjRuntime {
             double[] rp = T1Model.rollPitch(p.quat());
             gait.feedback(rp[0], rp[1], Math.toRadians(p.gyro()[0]), Math.toRadians(p.gyro()[1]));
         }
-        talk.hear(p, world.time());
+        byte[] say = talk.step(p);
         boolean nearest = world.self() != null && world.ball() != null && talk.nearestToBall(world.self(), world.ball(), world.time());
-        MjBehaviour.Intent intent = behaviour.decide(world, nearest);
+        MjBehaviour.Intent intent = behaviour.decide(world, talk.order(), nearest);
         List<JointCommand> joints = motion(intent, p);
         for (JointCommand j : joints) actions.joint(j.actuator(), j.qDeg(), j.dqDeg(), j.kp(), j.kd(), j.tau());
         String reply = actions.build();
         last = reply;   // what a malformed message is answered with: never a say again (it would be a replay)
-        byte[] say = talk.say(p, world.self(), world.ball());
         if (say != null) reply = reply + actions.say(say).build();
         if (intent.beam() != null) {
             beams++;
@@ -219,4 +219,6 @@ public final class MjRuntime {
     public long beams() { return beams; }
     /** Team-mates' reports heard and accepted so far. */
     public long heardFromMates() { return talk.accepted(); }
+    /** The team channel's end: its rounds on the goalkeeper, its orders on a field player (counts for tests and logs). */
+    public phalanx.agent.team.TeamChannel channel() { return talk.channel(); }
 }

@@ -1,64 +1,114 @@
 package phalanx.agent.mj;
 
+import phalanx.agent.team.Reports;
+import phalanx.agent.team.RoundPlanner;
+import phalanx.agent.team.TeamChannel;
 import phalanx.comm.mj.MjPerception;
+import phalanx.comm.perception.Hear;
+import phalanx.comm.perception.PlayMode;
+import phalanx.comm.perception.Side;
+import phalanx.comm.team.Action;
 import phalanx.comm.team.ChannelConfig;
 import phalanx.comm.team.MjTeamMessageCodec;
+import phalanx.comm.team.SayCodec;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.team.TeamMessage;
-import phalanx.comm.team.TeamMessageCodec;
+import phalanx.coordination.CoordinationConfig;
+import phalanx.coordination.Coordinator;
+import phalanx.coordination.formation.StretchedFormation;
+import phalanx.coordination.support.DynamicProgrammingSupportMapper;
+import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;
 
+import java.util.ArrayList;
+import java.util.Base64;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 
 /**
- * The T1 team's talk on rcssservermj, a first step before the thesis's coordination rounds run there: each
- * player says its pose and ball (a Complete report, {@link MjTeamMessageCodec}'s 10-byte frame) in a slot of its
- * own, one speaker a cycle (the three loudest are always heard, docs/rcssservermj.md), and keeps the team-mates'
- * latest reports, so that the one nearest the ball can go to it ({@link #nearestToBall}).
+ * The T1 team's channel on rcssservermj: the thesis's coordination rounds (5.3) exactly as the SimSpark players run
+ * them ({@link TeamChannel}: CoordinatorRounds on the goalkeeper, FieldPlayerRounds on the others), over
+ * {@link MjTeamMessageCodec}'s 10-byte frames and {@link ChannelConfig#MJ}. On the goalkeeper a {@link RoundPlanner}
+ * plans each round with the coordination module on the 55 x 36 m field, with the formation stretched to it
+ * ({@link StretchedFormation}, the spots {@link MjBehaviour} walks to without orders). Each player also keeps its
+ * team-mates' last reported places, for the rule it follows while it has no order ({@link #nearestToBall}).
  */
 final class MjTeamTalk {
-    /** A team-mate's report older than this no longer counts. */
+    /** A team-mate's report older than this no longer counts for {@link #nearestToBall}. */
     static final double FRESH_S = 2.0;
 
-    record Mate(Pose2 pose, Vector2 ball, double time) {}
+    record Mate(Pose2 pose, double time) {}
 
-    private final int unum, players;
-    private final MjTeamMessageCodec codec;
+    private final int unum;
+    private final MjWorld world;
+    private final TeamChannel channel;
     private final Map<Integer, Mate> mates = new HashMap<>();
-    private long accepted, rejected;
+    private long accepted;
 
-    MjTeamTalk(TeamKey key, int unum, int players) {
+    MjTeamTalk(TeamKey key, String team, int unum, MjField field, MjWorld world) {
         this.unum = unum;
-        this.players = players;
-        this.codec = new MjTeamMessageCodec(key, ChannelConfig.DEFAULT.withPlayers(players));
-    }
-
-    /** Takes this perception's heard messages (ours pass the keyed check; an opponent's never do). */
-    void hear(MjPerception p, double now) {
-        long cycle = MjTeamMessageCodec.cycleOf(p.time());
-        for (MjPerception.Heard h : p.heard()) {
-            TeamMessageCodec.Decoded d = codec.decode(h.bytes(), cycle);
-            if (d.accepted() && d.message() instanceof TeamMessage.Complete c && c.sender() != unum) {
-                accepted++;
-                mates.put(c.sender(), new Mate(new Pose2(c.x(), c.y(), c.thetaDeg()), new Vector2(c.ballX(), c.ballY()), now));
-            } else if (!d.accepted()) {
-                rejected++;
-            }
+        this.world = world;
+        ChannelConfig config = ChannelConfig.MJ.withPlayers(field.players());
+        SayCodec codec = new MjTeamMessageCodec(key, config).text();
+        if (unum != config.coordinator()) {
+            channel = TeamChannel.fieldPlayer(config, codec, team, unum);
+            return;
         }
-    }
-
-    /** Our frame for this cycle, or null when it is not our slot or we know too little to report. */
-    byte[] say(MjPerception p, Pose2 self, Vector2 ball) {
-        long cycle = MjTeamMessageCodec.cycleOf(p.time());
-        if (Math.floorMod(cycle, players) != unum - 1 || self == null || ball == null) return null;
-        return codec.encode(new TeamMessage.Complete(unum, self.x(), self.y(), self.thetaDeg(), ball.x(), ball.y()), cycle);
+        StretchedFormation formation = new StretchedFormation(field, CoordinationConfig.THESIS.formation());
+        Coordinator coordinator = new Coordinator(CoordinationConfig.THESIS, new DynamicProgrammingSupportMapper(),
+                (ball, plane) -> formation.generate(ball));
+        // the T1 keeper has no Libero state (its own FSM is SimSpark's), so it never has the ball: false
+        RoundPlanner planner = new RoundPlanner(coordinator, field.spec(), unum, () -> PlayMode.fromWire(world.playMode()),
+                () -> false, () -> new RoundPlanner.Own(report(unum, world), side(world), world.ball()));
+        channel = TeamChannel.coordinator(config, codec, team, planner);
     }
 
     /**
-     * True when no field player with a fresh report is nearer the ball than we are (ties to the lower number);
-     * the goalkeeper (1) never counts.
+     * One cycle, after the world has taken the perception: hears its messages (as the base64 text the rounds decode),
+     * steps the rounds, keeps the reports heard; returns the frame to say, or null.
+     */
+    byte[] step(MjPerception p) {
+        if (!Double.isFinite(p.time())) return null;   // no clock: no cycle, no slot
+        List<Hear> heard = new ArrayList<>(p.heard().size());
+        for (MjPerception.Heard h : p.heard()) {
+            // rcssservermj labels no message with a team and never echoes one's own: the keyed check tells ours
+            heard.add(new Hear(null, p.time(), false, h.azimuth(), Base64.getEncoder().encodeToString(h.bytes())));
+        }
+        PlayMode mode = p.playMode() == null ? null : PlayMode.fromWire(p.playMode());
+        String say = channel.step(MjTeamMessageCodec.cycleOf(p.time()), mode, heard, () -> report(unum, world));
+        for (TeamMessage.Report r : channel.heardReports()) {
+            accepted++;
+            if (r instanceof TeamMessage.Complete c) mates.put(c.sender(), new Mate(new Pose2(c.x(), c.y(), c.thetaDeg()), world.time()));
+            else if (r instanceof TeamMessage.Location l) mates.put(l.sender(), new Mate(new Pose2(l.x(), l.y(), l.thetaDeg()), world.time()));
+            else mates.remove(r.sender());   // B, X: no place (a fallen mate is not going to the ball)
+        }
+        return say == null ? null : Base64.getDecoder().decode(say);
+    }
+
+    /**
+     * What a T1 reports (5.3): its pose always (the server gives it), with the ball when seen within
+     * {@link Reports#BALL_FRESH_S} (Complete, else Location); X once down, as on SimSpark.
+     */
+    static TeamMessage.Report report(int unum, MjWorld w) {
+        Pose2 s = w.self();
+        if (s == null || !w.upright()) return new TeamMessage.Unaware(unum, s != null);
+        Vector2 b = w.ball();
+        if (b != null && w.ballAge() <= Reports.BALL_FRESH_S) return new TeamMessage.Complete(unum, s.x(), s.y(), s.thetaDeg(), b.x(), b.y());
+        return new TeamMessage.Location(unum, s.x(), s.y(), s.thetaDeg());
+    }
+
+    private static Side side(MjWorld w) {
+        return w.side() > 0 ? Side.LEFT : w.side() < 0 ? Side.RIGHT : null;
+    }
+
+    /** The coordinator's last order to this field player; null before the first, after it went quiet, on the goalkeeper. */
+    Action order() { return channel.order(); }
+
+    /**
+     * The rule without an order (today's stop-gap, kept as FieldPlayerRounds' fallback): true when no field player
+     * with a fresh report is nearer the ball than we are (ties to the lower number); the goalkeeper (1) never counts.
      */
     boolean nearestToBall(Pose2 self, Vector2 ball, double now) {
         double mine = self.position().distanceTo(ball);
@@ -72,7 +122,8 @@ final class MjTeamTalk {
         return true;
     }
 
+    /** Team-mates' reports heard and accepted so far. */
     long accepted() { return accepted; }
-    long rejected() { return rejected; }
     Map<Integer, Mate> mates() { return mates; }
+    TeamChannel channel() { return channel; }
 }

@@ -17,6 +17,7 @@ import phalanx.coordination.beliefs.PlayerReport;
 import phalanx.coordination.beliefs.TeamBeliefs;
 import phalanx.localization.belief.WorldBelief;
 import phalanx.model.field.FieldSpec;
+import phalanx.model.field.Vector2;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -36,7 +37,7 @@ public final class RoundPlanner implements CoordinationProcedure {
     private final Coordinator coordinator;
     private final FieldSpec field;
     private final int selfUnum;
-    private final Supplier<WorldBelief> ownBelief;
+    private final Supplier<Own> own;
     private final Supplier<PlayMode> playMode;
     private final BooleanSupplier goalkeeperHasBall;
     private Memory memory = Memory.NONE;
@@ -46,21 +47,39 @@ public final class RoundPlanner implements CoordinationProcedure {
 
     private record Heard(int round, TeamMessage.Report report) {}
 
+    /**
+     * What the coordinator adds of its own to a round: its report, the side we play on (null: unknown, taken as
+     * left) and its own ball, the ball of last resort when no report has one (null: none).
+     */
+    public record Own(TeamMessage.Report report, Side side, Vector2 ball) {
+        /** The goalkeeper's beliefs on SimSpark. */
+        public static Own of(int unum, WorldBelief b) {
+            return new Own(Reports.of(unum, b), b == null ? null : b.side(), b == null ? null : b.ballGlobal());
+        }
+    }
+
+    /** On SimSpark: the coordinator's own beliefs are its belief store's. */
     public RoundPlanner(Coordinator coordinator, FieldSpec field, int selfUnum, Supplier<WorldBelief> ownBelief,
                             Supplier<PlayMode> playMode, BooleanSupplier goalkeeperHasBall) {
+        this(coordinator, field, selfUnum, playMode, goalkeeperHasBall, () -> Own.of(selfUnum, ownBelief.get()));
+    }
+
+    /** With the coordinator's own report, side and ball from elsewhere (rcssservermj: {@code MjTeamTalk}). */
+    public RoundPlanner(Coordinator coordinator, FieldSpec field, int selfUnum, Supplier<PlayMode> playMode,
+                        BooleanSupplier goalkeeperHasBall, Supplier<Own> own) {
         this.coordinator = coordinator;
         this.field = field;
         this.selfUnum = selfUnum;
-        this.ownBelief = ownBelief;
+        this.own = own;
         this.playMode = playMode;
         this.goalkeeperHasBall = goalkeeperHasBall;
     }
 
     @Override public List<Action> actions(RoundReports round) {
-        WorldBelief me = ownBelief.get();
-        Side side = me == null || me.side() == null ? Side.LEFT : me.side();
+        Own me = own.get();
+        Side side = me.side() == null ? Side.LEFT : me.side();
         List<PlayerReport> reports = new ArrayList<>();
-        reports.add(Reports.toCoordination(Reports.of(selfUnum, me)));
+        reports.add(Reports.toCoordination(me.report()));
         for (TeamMessage.Report r : round.reports().values()) {
             if (r.sender() == selfUnum) continue;
             reports.add(Reports.toCoordination(r));
@@ -78,7 +97,7 @@ public final class RoundPlanner implements CoordinationProcedure {
         Mode mode = Mode.of(playMode.get(), side, goalkeeperHasBall.getAsBoolean());
         TeamPlan plan;
         try {
-            plan = coordinator.coordinate(new TeamBeliefs(field, reports, me == null ? null : me.ballGlobal()), mode, memory);
+            plan = coordinator.coordinate(new TeamBeliefs(field, reports, me.ball()), mode, memory);
         } catch (RuntimeException e) {
             // A bad round (a report the coordination refuses) must not stop the team: skip it.
             LOG.warning("coordination round " + round.round() + " skipped: " + e.getMessage());

@@ -2,6 +2,8 @@ package phalanx.agent.mj;
 
 import org.junit.jupiter.api.Test;
 import phalanx.comm.mj.MjPerception;
+import phalanx.comm.team.Action;
+import phalanx.comm.team.ActionId;
 import phalanx.coordination.formation.Role;
 import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
@@ -17,7 +19,7 @@ class MjBehaviourTest {
     private static final Map<String, double[]> HEAD = Map.of("q_hj1", new double[] {0, 0}, "q_hj2", new double[] {0, 0});
 
     /** A perception of an upright T1 at (x, y) facing yaw (world), optionally seeing the ball straight ahead at d. */
-    private static MjPerception at(double t, String mode, double x, double y, double yawDeg, double ballDistance) {
+    static MjPerception at(double t, String mode, double x, double y, double yawDeg, double ballDistance) {
         double h = Math.toRadians(yawDeg) / 2;
         List<MjPerception.Seen> seen = ballDistance > 0 ? List.of(new MjPerception.Seen("B", ballDistance, 0, 0)) : List.of();
         return new MjPerception(t, 0, mode, "Phalanx", "Other", 0, 0, new double[] {Math.cos(h), 0, 0, Math.sin(h)},
@@ -116,5 +118,42 @@ class MjBehaviourTest {
         w.update(at(1, "PlayOn", -20, 0, 0, 0));
         assertNotEquals(0, dc.decide(w).turnDegPerS());
         assertEquals(0, dc.decide(w).vx(), 1e-9);
+    }
+
+    @Test
+    void ordersOnBallSendsADefenderToTheBallAndAnyOtherOrderKeepsTheNearestAway() {
+        MjBehaviour dc = new MjBehaviour(MjField.SSIM, 3, MjBehaviour.Config.DEFAULT);
+        MjWorld w = new MjWorld("Phalanx");
+        w.update(at(1, "PlayOn", -10, 0, 0, 3));   // the ball 3 m ahead
+        Pose2 self = w.self();
+        Vector2 ball = w.ball();
+        MjBehaviour.Intent toBall = dc.kickToGoal(self, ball), home = dc.decide(w, null, false);
+        assertNotEquals(toBall, home, "the defender's spot is not the way to the ball");
+        assertEquals(toBall, dc.decide(w, Action.of(3, ActionId.ON_BALL), false), "ordered On Ball: to the ball, nearest or not");
+        assertEquals(toBall, dc.decide(w, null, true), "no order, nearest by the reports: to the ball (the rule without orders)");
+        assertEquals(home, dc.decide(w, Action.of(3, ActionId.LOOK_STRAIGHT), true), "another order: its spot, even when nearest");
+        assertEquals(home, dc.decide(w, Action.of(3, ActionId.TURN_TO_LOCALIZE), true));
+        w.update(at(1.02, "KickOff_Right", -10, 0, 0, 3));
+        assertEquals(dc.decide(w, null, false), dc.decide(w, Action.of(3, ActionId.ON_BALL), false), "not into their kick-off");
+    }
+
+    @Test
+    void walkToCoordinateWalksToThePointAndThereFacesTheBall() {
+        MjBehaviour.Config c = MjBehaviour.Config.DEFAULT;
+        MjBehaviour dl = new MjBehaviour(MjField.SSIM, 2, c);
+        MjWorld w = new MjWorld("Phalanx");
+        w.update(at(1, "PlayOn", 0, 0, 0, 0));   // no ball in sight: the order still leads
+        MjBehaviour.Intent i = dl.decide(w, Action.walkTo(2, 10, 2, 0), true);
+        // 11.3 deg off: below turnFirstDeg, so it walks at full speed turning toward the point
+        assertEquals(c.maxForward(), i.vx(), 1e-9, "walks: " + i);
+        assertEquals(Math.toDegrees(Math.atan2(2, 10)), i.turnDegPerS(), 1e-6);
+        i = dl.decide(w, Action.walkTo(2, -20, 10, 0), true);
+        assertEquals(0, i.vx(), 1e-9, "the point behind: turns first: " + i);
+        assertEquals(c.maxTurn(), i.turnDegPerS(), 1e-9);
+        // there (within arriveM): faces the order's heading without a ball, the ball once it sees one
+        assertSame(MjBehaviour.Intent.STAND, dl.decide(w, Action.walkTo(2, 0.2, 0, 0), false), "facing 0 as ordered: stands");
+        assertEquals(c.maxTurn(), dl.decide(w, Action.walkTo(2, 0.2, 0, 90), false).turnDegPerS(), 1e-9, "turns to face 90");
+        w.update(at(1.02, "PlayOn", 0, 0, 0, 3));
+        assertSame(MjBehaviour.Intent.STAND, dl.decide(w, Action.walkTo(2, 0.2, 0, 90), false), "the ball ahead: faces it, stands");
     }
 }

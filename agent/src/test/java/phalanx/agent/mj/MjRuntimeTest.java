@@ -49,6 +49,32 @@ class MjRuntimeTest {
         assertEquals(7, r.malformed(), "and each is counted");
     }
 
+    @Test
+    void foreignAndBrokenHeardMessagesAreDroppedAndThePlayerPlaysOn() throws Exception {
+        MjRuntime r = new MjRuntime("Phalanx", 2, MjField.SSIM);
+        List<String> lines = Files.readAllLines(RECORDING);
+        var them = new phalanx.comm.team.MjTeamMessageCodec(phalanx.comm.team.TeamKey.fromSecret("the-other-teams-key-123"),
+                phalanx.comm.team.ChannelConfig.MJ);
+        java.util.Base64.Encoder b64 = java.util.Base64.getEncoder();
+        for (int k = 0; k < 20; k++) {
+            String line = lines.get(k);
+            long cycle = phalanx.comm.team.MjTeamMessageCodec.cycleOf(Double.parseDouble(line.replaceAll("^.*?\\(now ([0-9.]+)\\).*$", "$1")));
+            // an opponent's order to player 2 said two cycles ago, random bytes, too short, too long, not base64
+            String mic = "(MIC hear (0 " + b64.encodeToString(them.encode(new phalanx.comm.team.TeamMessage.Actions(0,
+                    List.of(phalanx.comm.team.Action.walkTo(2, 30, 20, 0))), cycle - 2)) + ")(45 " + b64.encodeToString(new byte[] {9, 8, 7, 6, 5, 4, 3, 2, 1, 0})
+                    + ")(90 AQID)(135 " + b64.encodeToString(new byte[11]) + ")(180 not-base64!))";
+            String reply = assertDoesNotThrow(() -> r.update(line + mic));
+            assertTrue(reply.startsWith("(") && reply.endsWith(")"), reply);
+        }
+        assertEquals(0, r.malformed(), "a bad heard message is not a bad perception");
+        assertNull(r.channel().order(), "no order from another team");
+        var c = r.channel();
+        assertEquals(20, c.rejected(phalanx.comm.team.TeamMessageCodec.Rejection.TOO_SHORT));
+        assertEquals(20, c.rejected(phalanx.comm.team.TeamMessageCodec.Rejection.TOO_LONG));
+        assertEquals(40, c.rejected(phalanx.comm.team.TeamMessageCodec.Rejection.BAD_CHECK) + c.rejected(phalanx.comm.team.TeamMessageCodec.Rejection.WRONG_TIME),
+                "the opponent's order and the random frame fail the check (or the cycle bits)");
+    }
+
     /** A recorded message in play with the torso lying (quaternion w x y z), still, every joint at 0. */
     private static String lying(String recorded, String quat) {
         return recorded.replace("(pm BeforeKickOff)", "(pm PlayOn)").replaceAll("\\(q [^)]*\\)", "(q " + quat + ")")

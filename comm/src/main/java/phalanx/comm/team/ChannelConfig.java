@@ -35,6 +35,14 @@ public record ChannelConfig(int players, int coordinator, int slotCycles,
 
     public static final ChannelConfig DEFAULT = new ChannelConfig(11, 1, 2, 2, 3, 0, 20, 100, 2, 100);
 
+    /**
+     * rcssservermj's ssim rule book (docs/rcssservermj.md, "Say and hear"): 7 players, and slots of 1 cycle. Its
+     * hearing has no per-listener capacity (rcsssmj 0.2.1 sim/simulation.py: in each cycle a listener hears the three
+     * loudest messages of that cycle always, quieter ones at random), so one speaker a cycle loses nothing where
+     * SimSpark needs 2. The latency is SimSpark's (said after perception c, heard in c + 2, measured).
+     */
+    public static final ChannelConfig MJ = DEFAULT.withPlayers(7).withSlotCycles(1);
+
     public ChannelConfig {
         if (players < 2 || players > 15) {
             throw new IllegalArgumentException("players must be 2-15 (uniform numbers are 4 bits on the wire), got " + players);
@@ -86,6 +94,16 @@ public record ChannelConfig(int players, int coordinator, int slotCycles,
     /** Report slot of a field player, 0-based, counted from the round's first report slot. */
     public int reportSlot(int unum) {
         return unum < coordinator ? unum - 1 : unum - 2;
+    }
+
+    /**
+     * Cycles from a start message ("s") to its round's first report slot: one slot, or when slots are shorter than
+     * the latency as many whole slots as it takes for the start to be heard. With rcssservermj's 1-cycle slots a first
+     * slot one cycle after "s" came before anyone could have heard it, and player 2's report was lost in every round
+     * a start began (MjTeamTest on the real server). 2 on SimSpark's 2-cycle slots, as before.
+     */
+    public int startToFirstReportCycles() {
+        return slotCycles * Math.max(1, (minLatencyCycles + slotCycles - 1) / slotCycles);
     }
 
     /** Number of field players, each owning one report slot per round. */

@@ -9,11 +9,12 @@ import phalanx.comm.team.TeamMessageCodec.Rejection;
  * labelled with another team without checking them, checks the rest and counts rejections.
  */
 public final class Listener {
-    private final TeamMessageCodec codec;
+    private final SayCodec codec;
     private final String team;
     private final long[] rejected = new long[Rejection.values().length];
 
-    public Listener(TeamMessageCodec codec, String team) {
+    public Listener(SayCodec codec, String team) {
+        if (codec == null) throw new IllegalArgumentException("codec is null");
         this.codec = codec;
         this.team = team;
     }

@@ -4,6 +4,7 @@ import phalanx.comm.team.TeamMessageCodec.Decoded;
 import phalanx.comm.team.TeamMessageCodec.Rejection;
 
 import java.util.ArrayList;
+import java.util.Base64;
 import java.util.Collection;
 import java.util.List;
 
@@ -195,6 +196,35 @@ public final class MjTeamMessageCodec {
      */
     public static List<TeamMessage.Actions> pack(Collection<Action> actions) {
         return ActionPacking.pack(actions, MjTeamMessageCodec::entryBits, ACTION_ENTRY_BITS, MAX_ACTION_MESSAGES, "frames");
+    }
+
+    /**
+     * This codec as the round state machines take it ({@link SayCodec}): each frame as the standard padded base64
+     * text that {@code (SPK say 100 <base64>)} carries and {@code (MIC hear (AZ <base64>))} delivers (16 characters),
+     * so {@code CoordinatorRounds} and {@code FieldPlayerRounds} run unchanged on rcssservermj. A heard text that is
+     * not base64 is rejected as {@link Rejection#FOREIGN_CHARACTER}.
+     */
+    public SayCodec text() {
+        return new SayCodec() {
+            @Override public String encode(TeamMessage message, long saidCycle) {
+                return Base64.getEncoder().encodeToString(MjTeamMessageCodec.this.encode(message, saidCycle));
+            }
+
+            @Override public Decoded decode(String text, long heardCycle) {
+                if (text == null || text.isEmpty()) return TeamMessageCodec.rejected(Rejection.EMPTY);
+                byte[] bytes;
+                try {
+                    bytes = Base64.getDecoder().decode(text);
+                } catch (IllegalArgumentException e) {
+                    return TeamMessageCodec.rejected(Rejection.FOREIGN_CHARACTER);
+                }
+                return MjTeamMessageCodec.this.decode(bytes, heardCycle);
+            }
+
+            @Override public List<TeamMessage.Actions> packActions(Collection<Action> actions) {
+                return pack(actions);
+            }
+        };
     }
 
     private void header(int type, int cycleBits) {

@@ -37,7 +37,7 @@ import java.util.List;
  * <p>Not thread-safe: each player owns one codec (it reuses its buffers, so decoding allocates only the
  * message it accepts).
  */
-public final class TeamMessageCodec {
+public final class TeamMessageCodec implements SayCodec {
     static final String ALPHABET = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
     static final int MAX_LENGTH = EffectorMessage.MAX_SAY_LENGTH;
     static final int CHECK_CHARS = 5;
@@ -123,7 +123,7 @@ public final class TeamMessageCodec {
      * Refuses (IllegalArgumentException) what cannot be sent: bad uniform numbers, non-finite
      * values, action lists that do not fit.
      */
-    public String encode(TeamMessage message, long saidCycle) {
+    @Override public String encode(TeamMessage message, long saidCycle) {
         wPos = CHECK_CHARS;
         wCur = 0;
         wBits = 0;
@@ -223,6 +223,10 @@ public final class TeamMessageCodec {
         return ActionPacking.pack(actions, TeamMessageCodec::entryBits, ACTION_ENTRY_BITS, MAX_ACTION_MESSAGES, "messages");
     }
 
+    @Override public List<TeamMessage.Actions> packActions(Collection<Action> actions) {
+        return pack(actions);
+    }
+
     private void header(int type, int cycleBits) {
         put(type, 4);
         put(cycleBits, 2);
@@ -262,7 +266,7 @@ public final class TeamMessageCodec {
      * Our message in this text heard in the perception of {@code heardCycle}, or why it is not one.
      * Never throws, whatever the text.
      */
-    public Decoded decode(String text, long heardCycle) {
+    @Override public Decoded decode(String text, long heardCycle) {
         if (text == null || text.isEmpty()) return rejected(Rejection.EMPTY);
         int len = text.length();
         if (len > MAX_LENGTH) return rejected(Rejection.TOO_LONG);

@@ -255,4 +255,26 @@ class MjTeamMessageCodecTest {
             assertEquals(first + i, MjTeamMessageCodec.cycleOf(now), "at " + now);
         }
     }
+
+    @Test
+    void theTextFormIsTheFrameInBase64AndRejectsWhatIsNotBase64() {
+        MjTeamMessageCodec codec = new MjTeamMessageCodec(KEY, ChannelConfig.MJ);
+        SayCodec text = codec.text();
+        TeamMessage m = new TeamMessage.Location(4, -10.2, 6.4, 90);
+        String said = text.encode(m, 1001);
+        assertEquals(16, said.length(), "10 bytes in padded base64: " + said);
+        assertArrayEquals(codec.encode(m, 1001), java.util.Base64.getDecoder().decode(said));
+        TeamMessageCodec.Decoded d = text.decode(said, 1003);
+        assertEquals(m, d.message());
+        assertEquals(1001, d.saidCycle());
+        assertEquals(Rejection.FOREIGN_CHARACTER, text.decode("not base64!", 1003).rejection());
+        assertEquals(Rejection.EMPTY, text.decode("", 1003).rejection());
+        assertEquals(Rejection.TOO_LONG, text.decode(java.util.Base64.getEncoder().encodeToString(new byte[11]), 1003).rejection());
+        assertEquals(Rejection.BAD_CHECK, new MjTeamMessageCodec(TeamKey.fromSecret("somebody-elses-key-000"), ChannelConfig.MJ).text()
+                .decode(said, 1003).rejection(), "another team's frame");
+        List<Action> six = List.of(Action.of(7, ActionId.ON_BALL), Action.walkTo(2, -20, 3, 0), Action.walkTo(3, -20, -3, 0),
+                Action.walkTo(4, -15, 0, 0), Action.walkTo(5, -5, 6, 0), Action.walkTo(6, -5, -6, 0));
+        assertEquals(MjTeamMessageCodec.pack(six), text.packActions(six));
+        assertEquals(5, text.packActions(six).size(), "7 v 7's dispatch: five poses, the On Ball beside one of them");
+    }
 }

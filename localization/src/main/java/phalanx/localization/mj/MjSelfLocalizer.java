@@ -6,7 +6,6 @@ import phalanx.localization.LocalizationConfig;
 import phalanx.localization.filter.LocalizationFilter;
 import phalanx.localization.vision.LandmarkSighting;
 import phalanx.localization.vision.SelfLocalizer;
-import phalanx.model.field.FieldSpec;
 import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
 import phalanx.model.field.Vector2;
@@ -31,9 +30,7 @@ public final class MjSelfLocalizer {
 
     public MjSelfLocalizer(MjField field, LocalizationConfig config) {
         this.markers = field.markers();
-        FieldSpec plane = new FieldSpec(field.name(), field.length(), field.width(), field.goalWidth(), field.goalHeight(),
-                field.penaltyArea()[0], field.penaltyArea()[1], field.centreRadius(), field.players());
-        this.pairs = new SelfLocalizer(plane, config);
+        this.pairs = new SelfLocalizer(field.spec(), config);
         this.fifo = new LocalizationFilter(config.fifoMaxSize(), config.selfAgreementMetres(), config.selfAgreementDeg(),
                 config.relocateFrames(), config.relocateMetres(), config.relocateDeg(), config.relocateSpreadMetres(),
                 config.relocateSpreadDeg());

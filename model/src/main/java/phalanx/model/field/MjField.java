@@ -21,6 +21,14 @@ public record MjField(String name, double length, double width, double goalWidth
     public static final MjField SSIM = new MjField("fifa7vs7", 55, 36, 3.66, 1.83,
             new double[] {4, 7.3}, new double[] {9, 16.5}, 5.5, 7.32, 7);
 
+    /**
+     * This field as the plane the SimSpark-side code works on (self-localization's geometry, the coordination's
+     * field): its size, goal, penalty area as FieldSpec's penalty box, centre circle and team size.
+     */
+    public FieldSpec spec() {
+        return new FieldSpec(name, length, width, goalWidth, goalHeight, penaltyArea[0], penaltyArea[1], centreRadius, players);
+    }
+
     public double halfLength() { return length / 2; }
     public double halfWidth() { return width / 2; }
 

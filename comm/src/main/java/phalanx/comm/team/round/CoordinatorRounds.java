@@ -3,6 +3,7 @@ package phalanx.comm.team.round;
 import phalanx.comm.team.Action;
 import phalanx.comm.team.ChannelConfig;
 import phalanx.comm.team.Listener;
+import phalanx.comm.team.SayCodec;
 import phalanx.comm.team.TimeSlices;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.team.TeamMessageCodec;
@@ -28,8 +29,8 @@ import java.util.logging.Logger;
  * <pre>
  * INIT      gather "i" messages, speaking only in its own labelled slot (4.7); once every field
  *           player has announced itself, or initTimeoutCycles have passed, say "s" in its next slot.
- * REPORTS   field player u reports in slot (u - 2) after the round starts (after "s", or when the
- *           schedule the last dispatch announced comes). The phase closes once every active player's
+ * REPORTS   field player u reports in slot (u - 2) after the round starts (after "s", from the first slot it
+ *           can have been heard in; or when the schedule the last dispatch announced comes). The phase closes once every active player's
  *           report is in, or maxLatency after the last report slot, and never before that slot is over.
  * DISPATCH  call the {@link CoordinationProcedure}, wait computeCycles, then say the action messages one
  *           slot apart ("a", the first one closing the reports; "e" when there is nothing to send).
@@ -47,7 +48,7 @@ public final class CoordinatorRounds {
     public enum Phase { INIT, STARTING, REPORTS, DISPATCH, PAUSE }
 
     private final ChannelConfig config;
-    private final TeamMessageCodec codec;
+    private final SayCodec codec;
     private final Listener listener;
     private final CoordinationProcedure procedure;
     private final int self;
@@ -68,10 +69,16 @@ public final class CoordinatorRounds {
     private long nextSay = NONE;
     private long nextRoundFirstReport = NONE;
 
+    /** On SimSpark: the 20-character codec ({@link TeamMessageCodec}). */
     public CoordinatorRounds(ChannelConfig config, TeamKey key, String teamName, CoordinationProcedure procedure) {
+        this(config, new TeamMessageCodec(key, config), teamName, procedure);
+    }
+
+    /** With the codec of the server played on (rcssservermj: {@code MjTeamMessageCodec.text()}). */
+    public CoordinatorRounds(ChannelConfig config, SayCodec codec, String teamName, CoordinationProcedure procedure) {
         if (procedure == null) throw new IllegalArgumentException("coordination procedure is null");
         this.config = config;
-        this.codec = new TeamMessageCodec(key, config);
+        this.codec = codec;
         this.listener = new Listener(codec, teamName);
         this.procedure = procedure;
         this.self = config.coordinator();
@@ -110,7 +117,7 @@ public final class CoordinatorRounds {
         if (phase == Phase.INIT && (allKnown() || cycle >= initDeadline)) phase = Phase.STARTING;
         if (phase == Phase.STARTING && slices.isSlotStart(cycle) && slices.label(cycle) == self) {
             say = codec.encode(new TeamMessage.Start(self), cycle);
-            events = beginRound(cycle, cycle + config.slotCycles(), events);
+            events = beginRound(cycle, cycle + config.startToFirstReportCycles(), events);
         }
         if (phase == Phase.PAUSE && cycle >= nextRoundFirstReport) {
             events = beginRound(nextRoundFirstReport, nextRoundFirstReport, events);
@@ -190,7 +197,7 @@ public final class CoordinatorRounds {
         try {
             actions = procedure.actions(new RoundReports(round, cycle, heard, inactiveNow));
             if (actions == null) actions = List.of();
-            pending = new ArrayList<>(TeamMessageCodec.pack(actions));
+            pending = new ArrayList<>(codec.packActions(actions));
         } catch (RuntimeException e) {
             LOG.log(Level.WARNING, "coordination procedure failed in round " + round + ", no actions sent: " + e, e);
             actions = List.of();

@@ -3,6 +3,7 @@ package phalanx.comm.team.round;
 import phalanx.comm.team.Action;
 import phalanx.comm.team.ChannelConfig;
 import phalanx.comm.team.Listener;
+import phalanx.comm.team.SayCodec;
 import phalanx.comm.team.TimeSlices;
 import phalanx.comm.team.TeamKey;
 import phalanx.comm.team.TeamMessageCodec;
@@ -25,8 +26,9 @@ import java.util.logging.Logger;
  * AUTONOMOUS   no word from the coordinator yet (or for coordinatorSilenceCycles): say "i" in its own
  *              labelled slot (4.7) while no round is heard going on, and act on its own beliefs.
  * COORDINATED  every "s", "a" or "e" from the coordinator gives the cycle of its next report slot:
- *              slot (u - 2) after "s", or, after an "a" with r more to come, (r + 1) slots plus the
- *              pause later, then (u - 2) slots more. It says its report exactly then, and keeps the
+ *              slot (u - 2) after "s" (counted from the first slot "s" can have been heard in,
+ *              {@link ChannelConfig#startToFirstReportCycles}), or, after an "a" with r more to come, (r + 1)
+ *              slots plus the pause later, then (u - 2) slots more. It says its report exactly then, and keeps the
  *              last action addressed to it until the next one.
  * </pre>
  * A play-mode change voids the schedule: the coordinator starts a new round at once.
@@ -45,7 +47,7 @@ public final class FieldPlayerRounds {
 
     private final ChannelConfig config;
     private final int self;
-    private final TeamMessageCodec codec;
+    private final SayCodec codec;
     private final Listener listener;
 
     private TimeSlices slices;
@@ -56,14 +58,20 @@ public final class FieldPlayerRounds {
     private long lastRoundTraffic = NONE;
     private Action current;
 
+    /** On SimSpark: the 20-character codec ({@link TeamMessageCodec}). */
     public FieldPlayerRounds(ChannelConfig config, int unum, TeamKey key, String teamName) {
+        this(config, unum, new TeamMessageCodec(key, config), teamName);
+    }
+
+    /** With the codec of the server played on (rcssservermj: {@code MjTeamMessageCodec.text()}). */
+    public FieldPlayerRounds(ChannelConfig config, int unum, SayCodec codec, String teamName) {
         if (unum < 1 || unum > config.players() || unum == config.coordinator()) {
             throw new IllegalArgumentException("a field player's uniform number must be 1-" + config.players()
                     + " and not the coordinator's (" + config.coordinator() + "), got " + unum);
         }
         this.config = config;
         this.self = unum;
-        this.codec = new TeamMessageCodec(key, config);
+        this.codec = codec;
         this.listener = new Listener(codec, teamName);
         this.slices = TimeSlices.of(config);
     }
@@ -128,7 +136,7 @@ public final class FieldPlayerRounds {
         if (m instanceof TeamMessage.Report r && r.sender() != self) events = add(events, new ChannelEvent.ReportHeard(r, d.saidCycle(), cycle));
         long firstReport;
         if (m instanceof TeamMessage.Start s && s.sender() == config.coordinator()) {
-            firstReport = d.saidCycle() + slot;
+            firstReport = d.saidCycle() + config.startToFirstReportCycles();
         } else if (m instanceof TeamMessage.End e && e.sender() == config.coordinator()) {
             firstReport = d.saidCycle() + slot * (1 + config.pauseSlots());
         } else if (m instanceof TeamMessage.Actions a) {
