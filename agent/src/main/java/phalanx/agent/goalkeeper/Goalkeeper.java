@@ -91,8 +91,34 @@ public final class Goalkeeper implements Action {
             state = State.GUARD;
             return guard(s);
         }
-        return walk.decide(s);
+        Move back = backpedal(s);
+        return back != null ? Decision.of(back, track.head(s)) : walk.decide(s);
     }
+
+    /**
+     * Back to the spot from the field's side of it, within BACKPEDAL_WITHIN: the omnidirectional walk straight backwards,
+     * facing away from the spot (so the field), with the head on the ball; null otherwise. Walk To Coordinate turned the
+     * keeper to face its own goal for the way back: in session 25's FCP game four of the six goals were shot while it
+     * walked back from a Challenge or was turning round (its heading -119 to -136 and 142-148 degrees at the shots).
+     */
+    private Move backpedal(Situation s) {
+        Pose2 self = Facts.self(s, config);
+        if (self == null || s.field() == null) return null;
+        Vector2 spot = spot(s.field());
+        Vector2 away = self.position().minus(spot);
+        double d = away.norm();
+        if (d <= config.walk().positionTolerance() || d > BACKPEDAL_WITHIN || Math.abs(away.angleDeg()) > BACKPEDAL_MAX_DEG) return null;
+        AgentConfig.Approach a = config.approach();
+        // faceWayBeyond infinite: the walk keeps the heading given and steps toward the point whatever its bearing
+        AgentConfig.Approach facing = new AgentConfig.Approach(a.enabled(), a.behind(), a.sideClearance(), a.slowWithin(),
+                a.minShare(), Double.POSITIVE_INFINITY, a.turnFullDeg(), a.arriveDistance(), a.arriveDeg());
+        return ApproachBall.toward(self, new Pose2(spot.x(), spot.y(), away.angleDeg()), facing);
+    }
+
+    /** The keeper walks backwards to its spot from at most this far, m (the Challenge goes at most ~3 m out). */
+    private static final double BACKPEDAL_WITHIN = 3.0;
+    /** ... and only from the field's side of the spot: within this of straight out from it, degrees. */
+    private static final double BACKPEDAL_MAX_DEG = 80;
 
     private Decision guard(Situation s) {
         Decision d = tryDive(s);

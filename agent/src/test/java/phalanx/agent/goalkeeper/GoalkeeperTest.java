@@ -129,14 +129,40 @@ class GoalkeeperTest {
     @Test
     void localizeWalksToTheSpotThenGuards() {
         Goalkeeper k = new Goalkeeper(C);
-        Move m = k.decide(World.at(-12, 0, 0).ballAt(0, 0).situation()).move();
-        assertTrue(m instanceof Move.Turn, "spot behind: turn first, " + m);
+        Move m = k.decide(World.at(-11, 0, 0).ballAt(0, 0).situation()).move();
+        assertTrue(m instanceof Move.Turn, "spot 3.5 m behind: turn first, " + m);
         assertEquals(Goalkeeper.State.LOCALIZE, k.state());
         assertEquals(Move.STAND, k.decide(World.at(-14.45, 0.1, 3).ballAt(0, 0).situation()).move());
         assertEquals(Goalkeeper.State.GUARD, k.state());
         // Pushed 1 m off the spot with no shot coming: back to LOCALIZE.
         k.decide(World.at(-13.5, 0, 0).ballAt(0, 0).situation());
         assertEquals(Goalkeeper.State.LOCALIZE, k.state());
+    }
+
+    /** Back to the spot from the field's side within 3 m: backwards, facing the field, the head on the ball. */
+    @Test
+    void localizeWalksBackwardsToTheSpotFacingTheField() {
+        // 2.5 m straight out from the spot, facing the field: straight back at full backward speed, no turn.
+        Goalkeeper k = new Goalkeeper(C);
+        Move m = k.decide(World.at(-12, 0, 0).ballAt(-5, 0).situation()).move();
+        assertEquals(Goalkeeper.State.LOCALIZE, k.state());
+        assertEquals(new Move.Omni(-1, 0, 0), m);
+        // Out at 60 degrees from the spot (session 25's FCP game, 354 s: (-13.52, 1.71)): it faces straight away from
+        // the spot (60 deg, so the field) and walks backwards; facing 30 deg it turns left toward 60.
+        Move.Omni o = (Move.Omni) new Goalkeeper(C).decide(World.at(-13.5, 1.732, 60).ballAt(-9, 3).situation()).move();
+        assertEquals(-1, o.forward(), 1e-3);
+        assertEquals(0, o.left(), 0.01);
+        assertEquals(0, o.turn(), 0.01);
+        o = (Move.Omni) new Goalkeeper(C).decide(World.at(-13.5, 1.732, 30).ballAt(-9, 3).situation()).move();
+        assertTrue(o.turn() > 0.5, "turning left toward 60 deg: " + o);
+        // Beside the spot (on its line) or past it toward the goal line: the usual walk, facing where it goes.
+        assertInstanceOf(Move.Turn.class, new Goalkeeper(C).decide(World.at(-14.5, 2, 0).ballAt(-5, 0).situation()).move());
+        // Farther than 3 m: the usual walk (turn round first).
+        assertInstanceOf(Move.Turn.class, new Goalkeeper(C).decide(World.at(-11.2, 0, 0).ballAt(-5, 0).situation()).move());
+        // At the spot: turns to face the field, then guards.
+        Goalkeeper g = new Goalkeeper(C);
+        g.decide(World.at(-14.45, 0.1, 3).ballAt(-5, 0).situation());
+        assertEquals(Goalkeeper.State.GUARD, g.state());
     }
 
     @Test
