@@ -26,7 +26,8 @@ import phalanx.motion.t1.T1KickConfig;
  * goalkeeper's; {@link MjSetPiece}): each player has its own fresh ball and pose, where the coordinator plans with reports
  * a round old and only for the field players. In the other side's set pieces nobody goes to the ball (the one that would
  * stands on the ball's line to our goal outside the circle); a player barred by the double-touch rule
- * ({@link MjTouchRule}) keeps {@code keepOffBallM} from the ball.
+ * ({@link MjTouchRule}) keeps {@link #KEEP_OFF_BALL_M} from the ball; and no field player's place lies in our goalie area, so
+ * that only the keeper and the one going to the ball are in it (the illegal-defence rule: MjSetPiece).
  */
 final class MjBehaviour {
     /** Which foot kicks. */
@@ -169,7 +170,8 @@ final class MjBehaviour {
             // the one that would go to the ball in their set piece stands on its line to our goal, outside the circle
             target = toBall && rules.centre() != null && !barred ? rules.wall(ball, field) : formation.generate(ball).position(role);
         }
-        return walkTo(self, rules.via(self.position(), rules.allowed(target, field), setPiece), look);
+        target = rules.allowed(MjSetPiece.outOfOurGoalieArea(target, field, setPiece.margin()), field);
+        return walkTo(self, rules.via(self.position(), target, setPiece), look);
     }
 
     /**

@@ -32,10 +32,12 @@ final class MjKeeper {
      * Ours (no thesis figure for the T1): the spot 1 m in front of the goal line (the T1 is 1.2 m tall, the goal 1 m deep)
      * and at most 1.2 m to either side of the middle (the goal's half width is 1.83 m, the T1's shoulders ~0.2 m to a
      * side); Libero for a ball seen within ballFreshS, nearer to the keeper than to every opponent by opponentMargin;
-     * back to Guard once the ball is exitMargin out of the area.
+     * kept while the ball was seen within ballKeepS (at its feet, where it stands to kick, the camera's 60 degrees below
+     * the horizon miss it: in MjKeeperServerTest it lost the ball 0.5 m in front of it and turned back), until the ball
+     * is exitMargin out of the area.
      */
-    record Config(double spotOffset, double maxShift, double ballFreshS, double opponentMargin, double exitMargin) {
-        static final Config DEFAULT = new Config(1.0, 1.2, 1.0, 0.5, 1.0);
+    record Config(double spotOffset, double maxShift, double ballFreshS, double ballKeepS, double opponentMargin, double exitMargin) {
+        static final Config DEFAULT = new Config(1.0, 1.2, 1.0, 4.0, 0.5, 1.0);
     }
 
     private final FieldSpec field;
@@ -59,9 +61,10 @@ final class MjKeeper {
 
     private State next(MjWorld w, boolean mayPlayBall) {
         Vector2 ball = w.ball();
-        if (!mayPlayBall || ball == null || w.self() == null || w.ballAge() > c.ballFreshS()) return State.GUARD;
+        boolean libero = state == State.LIBERO;
+        if (!mayPlayBall || ball == null || w.self() == null || w.ballAge() > (libero ? c.ballKeepS() : c.ballFreshS())) return State.GUARD;
         double mine = w.self().position().distanceTo(ball), theirs = w.opponentDistance(ball);
-        if (state == State.LIBERO) {
+        if (libero) {
             boolean keep = Goalkeeper.inGoalArea(field, ball, c.exitMargin()) && mine < theirs;
             return keep ? State.LIBERO : State.GUARD;
         }

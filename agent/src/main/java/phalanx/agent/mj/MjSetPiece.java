@@ -62,6 +62,19 @@ record MjSetPiece(Vector2 centre, double radius, double maxX, double boxMinX, do
         return new MjSetPiece(ball, radius, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, 0, margin);
     }
 
+    /**
+     * {@code p} moved out of our own goalie area grown by {@code margin}, to its nearest edge. The referee's illegal
+     * defence (soccer_referee.py {@code _check_illegal_defense}, any play mode): more than two of a team in its own goalie
+     * area for 5 steps, and the last to enter is dropped beyond the touch line. With the keeper there, a second player is
+     * one too many only when a third comes: so field players' places stay out and only the one going to the ball enters.
+     * Seen in MjKeeperServerTest before this: the keeper came out, walked back in last, and was dropped.
+     */
+    static Vector2 outOfOurGoalieArea(Vector2 p, MjField field, double margin) {
+        double edgeX = -field.halfLength() + field.goalieArea()[0] + margin, edgeY = field.goalieArea()[1] / 2 + margin;
+        if (p.x() >= edgeX || Math.abs(p.y()) >= edgeY) return p;
+        return edgeX - p.x() <= edgeY - Math.abs(p.y()) ? new Vector2(edgeX, p.y()) : new Vector2(p.x(), Math.copySign(edgeY, p.y() == 0 ? 1 : p.y()));
+    }
+
     /** Whether this restricts anything. */
     boolean restricts() {
         return centre != null || maxX < Double.POSITIVE_INFINITY || boxMinX < Double.POSITIVE_INFINITY;

@@ -74,6 +74,10 @@ class MjKeeperTest {
         w.update(view(1.12, "PlayOn", -26.5, 0, -17.0, 0));
         w.update(view(1.16, "PlayOn", -26.5, 0, -19.0, 0));
         assertEquals(MjKeeper.State.LIBERO, k.update(w, true), "in again");
+        w.update(view(4.0, "PlayOn", -19.5, 0, Double.NaN, 0));
+        assertEquals(MjKeeper.State.LIBERO, k.update(w, true), "at the ball it does not see it (below the camera's view): kept 4 s");
+        w.update(view(5.2, "PlayOn", -19.5, 0, Double.NaN, 0));
+        assertEquals(MjKeeper.State.GUARD, k.update(w, true), "unseen for 4.04 s: back");
 
         MjKeeper k2 = new MjKeeper(MjField.SSIM, MjKeeper.Config.DEFAULT);
         MjWorld w2 = new MjWorld("Phalanx");

@@ -110,6 +110,17 @@ class MjSetPieceTest {
     }
 
     @Test
+    void fieldPlayersPlacesStayOutOfOurGoalieArea() {
+        // our goalie area: x <= -23.5, |y| <= 3.65; grown by 1 m: x < -22.5, |y| < 4.65
+        assertEquals(new Vector2(-22.5, 1), MjSetPiece.outOfOurGoalieArea(new Vector2(-23, 1), F, 1.0), "nearest edge: the front");
+        assertEquals(new Vector2(-26, 4.65), MjSetPiece.outOfOurGoalieArea(new Vector2(-26, 4), F, 1.0), "nearest edge: the side");
+        assertEquals(new Vector2(-26, -4.65), MjSetPiece.outOfOurGoalieArea(new Vector2(-26, -4), F, 1.0));
+        Vector2 out = new Vector2(-20, 0);
+        assertSame(out, MjSetPiece.outOfOurGoalieArea(out, F, 1.0));
+        assertEquals(new Vector2(25, 0), MjSetPiece.outOfOurGoalieArea(new Vector2(25, 0), F, 1.0), "theirs is not ours");
+    }
+
+    @Test
     void keepingOffTheBallIsACircleOfItsOwn() {
         MjSetPiece r = MjSetPiece.around(new Vector2(3, 0), 1.0, 0);
         assertEquals(new Vector2(2, 0), r.allowed(new Vector2(2.5, 0)));
