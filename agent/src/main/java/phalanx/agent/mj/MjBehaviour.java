@@ -103,6 +103,7 @@ final class MjBehaviour {
      */
     Pose2 kickOffSpot(boolean theirKickOff) {
         Vector2 p = keeper != null ? keeper.guardPoint(null) : formation.generate(Vector2.ZERO).position(role);
+        // their kick-off in our own frame: the right's, seen from the left
         if (theirKickOff) p = MjSetPiece.of("KickOff_Right", 1, field, Vector2.ZERO, false, setPiece).allowed(p, field);
         return new Pose2(p.x(), p.y(), 0);
     }
@@ -119,8 +120,8 @@ final class MjBehaviour {
 
     /** The other side owns the play mode: its kick-off or set piece (a goal's pause and game over are nobody's). */
     static boolean theirs(MjWorld w) {
-        String m = w.playMode();
-        boolean owned = m.toLowerCase(java.util.Locale.ROOT).endsWith("_left") || m.toLowerCase(java.util.Locale.ROOT).endsWith("_right");
+        String m = w.playMode(), lower = m.toLowerCase(java.util.Locale.ROOT);
+        boolean owned = lower.endsWith("_left") || lower.endsWith("_right");
         return owned && !m.startsWith("Goal_") && !w.ours(m);
     }
 
