@@ -62,8 +62,13 @@ final class MjBehaviour {
                 0.0, 0.05, 20, 0.6, 0.2);  // kickBackoffM: 0.06 and 0.03 tried in MjKickTest, worse (motion/README.md "T1 kick")
     }
 
-    /** Ours: a player barred by the double-touch rule keeps this far from the ball (a walking T1's feet reach ~0.4 m ahead). */
-    static final double KEEP_OFF_BALL_M = 1.0;
+    /**
+     * Ours: a player barred by the double-touch rule keeps this far from the ball, out of the way of the team-mate the
+     * coordinator sends to it (at 1 m, two runs of MjSetPieceServerTest out of eleven had a double-touch free kick 20-25 s
+     * after a kick-off push, with three of ours fallen or standing within 1 m of a ball that had not moved); within
+     * BACK_OFF_M it steps off without turning, from there it turns and walks (the feet sweep ~0.3 m round the torso).
+     */
+    static final double KEEP_OFF_BALL_M = 2.0, BACK_OFF_M = 0.6;
     /**
      * A half of the ssim rule book, s (soccer_rules.py): before the kick-off the play time tells the half, and in the
      * second the right team kicks off (MjMatch's `(kickOff Right)`, as on SimSpark); no one tells us before it is given.
@@ -156,7 +161,7 @@ final class MjBehaviour {
         MjSetPiece rules = barred && ball != null ? MjSetPiece.around(ball, KEEP_OFF_BALL_M, 0)
                 : MjSetPiece.of(w.playMode(), w.side(), field, ball, toBall && mayPlayBall, setPiece);
         if (keeper != null) return guard(w, self, ball, rules, mayPlayBall);
-        if (barred && ball != null && self.position().distanceTo(ball) < KEEP_OFF_BALL_M) return backOff(self, ball);
+        if (barred && ball != null && self.position().distanceTo(ball) < BACK_OFF_M) return backOff(self, ball);
         Vector2 target, look;
         if (order != null && order.id() == ActionId.WALK_TO_COORDINATE) {
             target = new Vector2(order.x(), order.y());
@@ -172,19 +177,27 @@ final class MjBehaviour {
             target = toBall && rules.centre() != null && !barred ? rules.wall(ball, field) : formation.generate(ball).position(role);
         }
         target = rules.allowed(MjSetPiece.outOfOurGoalieArea(target, field, setPiece.margin()), field);
+        // Near a place the referee's circle or line is close to, hold it with small steps facing the ball: standing, the
+        // gait creeps forward (toward the ball we face), and walkTo would turn round to walk back (MjSetPieceServerTest:
+        // the forward, beamed 6.5 m from the centre at their kick-off, was at 5.90 m after 8 s).
+        if (rules.restricts() && ball != null && self.position().distanceTo(target) < c.approachM())
+            return stepTo(self, target, look.minus(self.position()).angleDeg(), HOLD_TOLERANCE_M);
         return walkTo(self, rules.via(self.position(), target, setPiece), look);
     }
 
+    /** Ours: holding a place in a set piece, a player stands once this near it (less than the gait's creep in a second). */
+    static final double HOLD_TOLERANCE_M = 0.1;
+
     /**
-     * Straight away from the ball without turning (backwards at most half the walk's forward speed, as the gait allows):
-     * turning on the spot next to the ball sweeps the feet round it, and each touch now is a foul.
+     * Off the ball without turning: backwards and sideways, to the side away from the ball (left when it lies straight
+     * ahead). Turning on the spot next to the ball sweeps the feet round it, and each touch now is a foul; but the gait
+     * hardly walks backwards (bench t1, balanced, 2026-12-07: -0.25 m/s commanded gave -0.05 m/s, -0.1 gave +0.02, the
+     * creep), while sideways it makes about 0.1 m/s (motion/README.md "T1 gait"): so mostly sideways.
      */
     private Intent backOff(Pose2 self, Vector2 ball) {
-        Vector2 away = self.toRelative(ball).times(-1);
-        double n = away.norm();
-        if (n < 1e-6) away = new Vector2(-1, 0); else away = away.times(1 / n);
-        double v = c.maxForward() / 2;
-        return new Intent(null, away.x() * v, away.y() * v, 0);
+        Vector2 rel = self.toRelative(ball);
+        double side = rel.y() > 0.02 ? -1 : 1;
+        return new Intent(null, -c.maxForward() / 2, side * c.fineSpeed(), 0);
     }
 
     /** The goalkeeper: Libero (to the ball and kick) or Guard (its line; side steps near it, facing the ball). */

@@ -228,6 +228,8 @@ public final class MjRuntime {
     /** Times the referee dropped this player on the touch line (a jump of the torso in play), and times the double-touch rule barred it. */
     public long refereeMoves() { return refereeMoves; }
     public long touchBars() { return touch.bars(); }
+    /** The double-touch rule bars this player from the ball now. */
+    public boolean barred() { return touch.barred(); }
 
     /** Kicks started and kicks the motion refused, so far. */
     public long kicks() { return kicks; }

@@ -211,6 +211,13 @@ class MjBehaviourTest {
         kickOff.update(at(1, "KickOff_Right", -3, 0, 0, 3));   // inside the circle: out, away from the ball
         MjBehaviour.Intent out = fc.decide(kickOff, null, true);
         assertTrue(out.vx() == 0 && out.turnDegPerS() != 0, "turns to walk back out: " + out);
+        MjWorld crept = new MjWorld("Phalanx");
+        crept.update(at(1, "KickOff_Right", -6.2, 0, 0, 0));   // the ball on the centre spot (the kick-off's drop), its place (-6.5, 0) 0.3 m behind
+        MjBehaviour.Intent hold = fc.decide(crept, null, true);
+        assertTrue(hold.vx() < 0 && Math.abs(hold.turnDegPerS()) < 5, "steps back facing the ball, no turning round: " + hold);
+        MjWorld held = new MjWorld("Phalanx");
+        held.update(at(1, "KickOff_Right", -6.45, 0, 0, 0));
+        assertSame(MjBehaviour.Intent.STAND, fc.decide(held, null, true), "within 0.1 m: stands");
     }
 
     @Test
@@ -223,9 +230,17 @@ class MjBehaviourTest {
         MjBehaviour.Intent i = fc.decide(w, onBall, true, true);
         assertNull(i.kick());
         assertNotEquals(fc.kickToGoal(w.self(), w.ball()), i);
-        assertTrue(i.vx() < 0 && Math.abs(i.vy()) < 0.01 && i.turnDegPerS() == 0, "steps straight back from the ball, not turning: " + i);
-        w.update(at(1.02, "PlayOn", -2.5, 0, 0, 2.4));
+        assertTrue(i.vx() < 0 && i.vy() > 0 && i.turnDegPerS() == 0, "steps back and to the left off the ball ahead, not turning: " + i);
+        w.update(at(1.01, "PlayOn", -0.5, 0, -20, 0));   // turned 20 deg right: the ball (not seen again) 20 deg to its left
+        MjBehaviour.Intent right = fc.decide(w, onBall, true, true);
+        assertTrue(right.vx() < 0 && right.vy() < 0 && right.turnDegPerS() == 0, "to the right, away from it: " + right);
+        w.update(at(1.02, "PlayOn", -2.3, 0, 0, 2.2));
         MjBehaviour.Intent away = fc.decide(w, onBall, true, true);
-        assertEquals(fc.decide(w, Action.of(7, ActionId.LOOK_STRAIGHT), false, false), away, "1 m or more off: to its spot as any other order");
+        MjBehaviour.Intent spot = fc.decide(w, Action.of(7, ActionId.LOOK_STRAIGHT), false, false);
+        assertTrue(spot.vx() == MjBehaviour.Config.DEFAULT.maxForward(), "unbarred, its formation spot 1.1 m behind the ball: walks up: " + spot);
+        assertTrue(away.vx() > 0 && away.vx() <= MjBehaviour.Config.DEFAULT.fineSpeed() + 1e-9,
+                "barred, the same spot held 2 m off the ball: small steps up to there: " + away);
+        w.update(at(1.04, "PlayOn", -2.05, 0, 0, 1.95));
+        assertTrue(fc.decide(w, onBall, true, true).vx() < 0.1, "at 2 m: no further");
     }
 }
