@@ -45,6 +45,8 @@ public final class Goalkeeper implements Action {
     private final AgentConfig config;
     private final TrackMovingObject track;
     private final Dive dive;
+    /** The approach's omnidirectional walk that keeps the given heading (backpedal). */
+    private final AgentConfig.Approach backwards;
     private WalkToCoordinate toSpot;
     private WalkToCoordinate toBall;
     private OnBall libero;
@@ -54,6 +56,10 @@ public final class Goalkeeper implements Action {
 
     public Goalkeeper(AgentConfig config) {
         this.config = config;
+        AgentConfig.Approach a = config.approach();
+        // faceWayBeyond infinite: the walk keeps the heading given and steps toward the point whatever its bearing
+        this.backwards = new AgentConfig.Approach(a.enabled(), a.behind(), a.sideClearance(), a.slowWithin(),
+                a.minShare(), Double.POSITIVE_INFINITY, a.turnFullDeg(), a.arriveDistance(), a.arriveDeg());
         this.track = new TrackMovingObject(config);
         this.dive = new Dive(config);
     }
@@ -108,11 +114,7 @@ public final class Goalkeeper implements Action {
         Vector2 away = self.position().minus(spot);
         double d = away.norm();
         if (d <= config.walk().positionTolerance() || d > BACKPEDAL_WITHIN || Math.abs(away.angleDeg()) > BACKPEDAL_MAX_DEG) return null;
-        AgentConfig.Approach a = config.approach();
-        // faceWayBeyond infinite: the walk keeps the heading given and steps toward the point whatever its bearing
-        AgentConfig.Approach facing = new AgentConfig.Approach(a.enabled(), a.behind(), a.sideClearance(), a.slowWithin(),
-                a.minShare(), Double.POSITIVE_INFINITY, a.turnFullDeg(), a.arriveDistance(), a.arriveDeg());
-        return ApproachBall.toward(self, new Pose2(spot.x(), spot.y(), away.angleDeg()), facing);
+        return ApproachBall.toward(self, new Pose2(spot.x(), spot.y(), away.angleDeg()), backwards);
     }
 
     /** The keeper walks backwards to its spot from at most this far, m (the Challenge goes at most ~3 m out). */
