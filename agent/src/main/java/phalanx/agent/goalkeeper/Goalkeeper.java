@@ -153,9 +153,7 @@ public final class Goalkeeper implements Action {
         Vector2 ball = Facts.ballGlobal(s, config);
         if (self == null || ball == null || s.field() == null || k.maxShift() <= 0) { shifting = false; return Move.STAND; }
         double goalX = -s.field().halfLength();
-        double depth = ball.x() - goalX;
-        double y = depth <= k.spotOffset() ? Math.signum(ball.y()) * k.maxShift() : ball.y() * k.spotOffset() / depth;
-        y = Math.max(-k.maxShift(), Math.min(k.maxShift(), y));
+        double y = guardPoint(goalX, k.spotOffset(), k.maxShift(), ball).y();
         // Off the spot's line by more than DEPTH_TOLERANCE (side steps drift back): step back onto it, facing the field.
         // In session 23 the keeper stood on its goal line, 0.5 m behind the spot, for most of some halves, and two of
         // UT Austin Villa's goals went in from 3.5-4 m past it there.
@@ -166,6 +164,17 @@ public final class Goalkeeper implements Action {
         double limit = shifting ? k.shiftTolerance() / 3 : k.shiftTolerance();
         shifting = Math.abs(side) > limit;
         return shifting ? new Move.SideStep(side > 0) : Move.STAND;
+    }
+
+    /**
+     * Guard's place (thesis 5.13): the point of the spot's line (spotOffset in front of the goal line at goalX) that lies
+     * between the goal's centre and the ball, at most maxShift from the middle; a ball level with the spot or behind it
+     * puts the point at the post's side. Shared with the T1 keeper on rcssservermj ({@code agent/mj/MjKeeper}).
+     */
+    public static Vector2 guardPoint(double goalX, double spotOffset, double maxShift, Vector2 ball) {
+        double depth = ball.x() - goalX;
+        double y = depth <= spotOffset ? Math.signum(ball.y()) * maxShift : ball.y() * spotOffset / depth;
+        return new Vector2(goalX + spotOffset, Math.max(-maxShift, Math.min(maxShift, y)));
     }
 
     private Decision libero(Situation s) {
@@ -357,8 +366,11 @@ public final class Goalkeeper implements Action {
         return f == null || !inGoalArea(f, ball, config.keeper().liberoExitMargin());
     }
 
-    /** Inside our goal area (the field's penalty box: 1.8 m deep, 3.9 m wide on 0.6.6+), grown by a margin. */
-    static boolean inGoalArea(FieldSpec f, Vector2 p, double margin) {
+    /**
+     * Inside our goal area (the field's penalty box: 1.8 m deep, 3.9 m wide on 0.6.6+; on rcssservermj's field,
+     * {@code MjField.spec()}, its penalty area, 9 x 16.5 m), grown by a margin.
+     */
+    public static boolean inGoalArea(FieldSpec f, Vector2 p, double margin) {
         return p.x() <= -f.halfLength() + f.penaltyDepth() + margin && p.x() >= -f.halfLength() - margin
                 && Math.abs(p.y()) <= f.penaltyWidth() / 2 + margin;
     }

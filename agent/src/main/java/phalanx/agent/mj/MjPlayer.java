@@ -42,7 +42,8 @@ public final class MjPlayer {
         Outcome out = play(o, runtime);
         String msg = "phalanx-player " + o.unum() + " (mj): " + out.reason() + " after " + out.cycles() + " cycles ("
                 + out.malformed() + " malformed messages skipped; " + runtime.getUps() + " get-ups, " + runtime.getUpRetries()
-                + " of them retries; " + runtime.kicks() + " kicks; " + channel(runtime) + ")";
+                + " of them retries; " + runtime.kicks() + " kicks; " + runtime.refereeMoves() + " moves by the referee; "
+                + runtime.touchBars() + " double-touch bars; " + channel(runtime) + ")";
         LOG.info(msg);
         System.err.println(msg);
         return out.status();

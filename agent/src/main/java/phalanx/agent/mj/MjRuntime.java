@@ -59,10 +59,18 @@ public final class MjRuntime {
     public MjRuntime(String team, int unum, MjField field, TeamKey key, Path motionDir) throws MotionFileException {
         this.getUp = T1GetUp.load(motionDir, T1GaitConfig.balanced().dt());
         this.unum = unum;
-        this.world = new MjWorld(team);
-        this.talk = new MjTeamTalk(key, team, unum, field, world);
+        this.world = new MjWorld(team, field);
         this.behaviour = new MjBehaviour(field, unum, MjBehaviour.Config.DEFAULT);
+        this.talk = new MjTeamTalk(key, team, unum, field, world, behaviour::keeperHasBall, touch::barred);
     }
+
+    /** The double-touch rule as this player keeps it. */
+    private final MjTouchRule touch = new MjTouchRule();
+    /** Ours: a team-mate's report this near the ball (its kick stance is 0.34 m), heard within MATE_FRESH_S, has played it. */
+    static final double MATE_AT_BALL_M = 0.45, MATE_FRESH_S = 1.0;
+    /** Ours: our torso moving this far in one cycle, with no beam allowed, is the referee dropping us on the touch line. */
+    static final double MOVED_M = 1.5;
+    private long refereeMoves;
 
     /** The reply to one server message. */
     public String update(String message) {
@@ -79,14 +87,23 @@ public final class MjRuntime {
             if (++malformed <= MALFORMED_LOGGED) LOG.warning("skipped a message whose torso quaternion is not a rotation: " + java.util.Arrays.toString(p.quat()));
             return last;
         }
+        var before = world.self();
         world.update(p);
+        if (before != null && world.self() != null && !world.beamAllowed() && before.position().distanceTo(world.self().position()) > MOVED_M) {
+            refereeMoves++;
+            LOG.info(String.format(java.util.Locale.ROOT, "moved by the referee %d at %.2f s in %s: %s -> %s, the ball believed at %s",
+                    refereeMoves, world.time(), world.playMode(), before, world.self(), world.ball()));
+        }
         if (p.quat() != null && p.gyro() != null) {
             double[] rp = T1Model.rollPitch(p.quat());
             gait.feedback(rp[0], rp[1], Math.toRadians(p.gyro()[0]), Math.toRadians(p.gyro()[1]));
         }
         byte[] say = talk.step(p);
+        touch.update(world, kick.active() || pendingKick != null, world.otherAtBall(MjTouchRule.OTHER_AT_BALL_M)
+                || talk.mateAtBall(world.ball(), MATE_AT_BALL_M, MATE_FRESH_S, world.time()));
+        if (touch.barred()) pendingKick = null;   // its one touch was the push on the way: no kick after it
         boolean nearest = world.self() != null && world.ball() != null && talk.nearestToBall(world.self(), world.ball(), world.time());
-        MjBehaviour.Intent intent = behaviour.decide(world, talk.order(), nearest);
+        MjBehaviour.Intent intent = behaviour.decide(world, talk.order(), nearest, touch.barred());
         List<JointCommand> joints = motion(intent, p);
         for (JointCommand j : joints) actions.joint(j.actuator(), j.qDeg(), j.dqDeg(), j.kp(), j.kd(), j.tau());
         String reply = actions.build();
@@ -156,7 +173,11 @@ public final class MjRuntime {
         }
         if (kick.active()) {
             List<JointCommand> j = kick.next();
-            if (!kick.active()) standUntil = world.time() + STAND_AFTER_KICK_S;
+            if (!kick.active()) {
+                standUntil = world.time() + STAND_AFTER_KICK_S;
+                LOG.info(String.format(java.util.Locale.ROOT, "kick %d ended at %.2f s in %s, the ball believed at %s", kicks, world.time(),
+                        world.playMode(), world.ball()));
+            }
             return j;
         }
         if (world.time() < standUntil) return gait.stand();   // then the gait starts afresh from the stand pose
@@ -203,6 +224,12 @@ public final class MjRuntime {
         for (int k : new int[]{0, 1, 3, 4}) most = Math.max(most, Math.abs(off[k]));
         return lift[0] < 1e-3 && lift[1] < 1e-3 && most < 0.02 && Math.abs(off[2]) < 0.05 && Math.abs(off[5]) < 0.05;
     }
+
+    /** Times the referee dropped this player on the touch line (a jump of the torso in play), and times the double-touch rule barred it. */
+    public long refereeMoves() { return refereeMoves; }
+    public long touchBars() { return touch.bars(); }
+    /** The double-touch rule bars this player from the ball now. */
+    public boolean barred() { return touch.barred(); }
 
     /** Kicks started and kicks the motion refused, so far. */
     public long kicks() { return kicks; }

@@ -26,6 +26,7 @@ import java.util.Base64;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.BooleanSupplier;
 
 /**
  * The T1 team's channel on rcssservermj: the thesis's coordination rounds (5.3) exactly as the SimSpark players run
@@ -44,12 +45,22 @@ final class MjTeamTalk {
     private final int unum;
     private final MjWorld world;
     private final TeamChannel channel;
+    private final BooleanSupplier barred;
     private final Map<Integer, Mate> mates = new HashMap<>();
     private long accepted;
 
     MjTeamTalk(TeamKey key, String team, int unum, MjField field, MjWorld world) {
+        this(key, team, unum, field, world, () -> false, () -> false);
+    }
+
+    /**
+     * {@code keeperHasBall}: on the goalkeeper, its Libero state (the coordination's Support mode, 5.2);
+     * {@code barred}: the double-touch rule bars this player from the ball ({@link MjTouchRule}), reported as X.
+     */
+    MjTeamTalk(TeamKey key, String team, int unum, MjField field, MjWorld world, BooleanSupplier keeperHasBall, BooleanSupplier barred) {
         this.unum = unum;
         this.world = world;
+        this.barred = barred;
         ChannelConfig config = ChannelConfig.MJ.withPlayers(field.players());
         SayCodec codec = new MjTeamMessageCodec(key, config).text();
         if (unum != config.coordinator()) {
@@ -59,9 +70,8 @@ final class MjTeamTalk {
         StretchedFormation formation = new StretchedFormation(field, CoordinationConfig.THESIS.formation());
         Coordinator coordinator = new Coordinator(CoordinationConfig.THESIS, new DynamicProgrammingSupportMapper(),
                 (ball, plane) -> formation.generate(ball));
-        // the T1 keeper has no Libero state (its own FSM is SimSpark's), so it never has the ball: false
         RoundPlanner planner = new RoundPlanner(coordinator, field.spec(), unum, () -> PlayMode.fromWire(world.playMode()),
-                () -> false, () -> new RoundPlanner.Own(report(unum, world), side(world), world.ball()));
+                keeperHasBall, () -> new RoundPlanner.Own(report(unum, world, barred.getAsBoolean()), side(world), world.ball()));
         channel = TeamChannel.coordinator(config, codec, team, planner);
     }
 
@@ -77,7 +87,7 @@ final class MjTeamTalk {
             heard.add(new Hear(null, p.time(), false, h.azimuth(), Base64.getEncoder().encodeToString(h.bytes())));
         }
         PlayMode mode = p.playMode() == null ? null : PlayMode.fromWire(p.playMode());
-        String say = channel.step(MjTeamMessageCodec.cycleOf(p.time()), mode, heard, () -> report(unum, world));
+        String say = channel.step(MjTeamMessageCodec.cycleOf(p.time()), mode, heard, () -> report(unum, world, barred.getAsBoolean()));
         for (TeamMessage.Report r : channel.heardReports()) {
             accepted++;
             if (r instanceof TeamMessage.Complete c) mates.put(c.sender(), new Mate(new Pose2(c.x(), c.y(), c.thetaDeg()), world.time()));
@@ -91,8 +101,16 @@ final class MjTeamTalk {
      * What a T1 reports (5.3): its pose always (the server gives it), with the ball when seen within
      * {@link Reports#BALL_FRESH_S} (Complete, else Location); X once down, as on SimSpark.
      */
-    static TeamMessage.Report report(int unum, MjWorld w) {
+    static TeamMessage.Report report(int unum, MjWorld w) { return report(unum, w, false); }
+
+    /**
+     * As above; while {@code barred} by the double-touch rule: X (thesis 5.3: nothing the plan can use), so that the
+     * coordinator counts the player inactive and gives On Ball to another, whose touch frees it. The coordination module
+     * stays as it is; the player's place is missing from the plan for that while.
+     */
+    static TeamMessage.Report report(int unum, MjWorld w, boolean barred) {
         Pose2 s = w.self();
+        if (barred && s != null && w.upright()) return new TeamMessage.Unaware(unum, false);
         if (s == null || !w.upright()) return new TeamMessage.Unaware(unum, s != null);
         Vector2 b = w.ball();
         if (b != null && w.ballAge() <= Reports.BALL_FRESH_S) return new TeamMessage.Complete(unum, s.x(), s.y(), s.thetaDeg(), b.x(), b.y());
@@ -120,6 +138,18 @@ final class MjTeamTalk {
             if (theirs < mine || theirs == mine && n < unum) return false;
         }
         return true;
+    }
+
+    /**
+     * A team-mate's report heard in the last {@code freshS} s puts its torso within {@code within} m of {@code ball}:
+     * where it stands to kick (the double-touch rule's sign that another player has played it).
+     */
+    boolean mateAtBall(Vector2 ball, double within, double freshS, double now) {
+        if (ball == null) return false;
+        for (Mate m : mates.values()) {
+            if (now - m.time() <= freshS && m.pose().position().distanceTo(ball) < within) return true;
+        }
+        return false;
     }
 
     /** Team-mates' reports heard and accepted so far. */

@@ -156,4 +156,91 @@ class MjBehaviourTest {
         w.update(at(1.02, "PlayOn", 0, 0, 0, 3));
         assertSame(MjBehaviour.Intent.STAND, dl.decide(w, Action.walkTo(2, 0.2, 0, 90), false), "the ball ahead: faces it, stands");
     }
+
+    /** {@code p} with another play time (GS t). */
+    private static MjPerception withGameTime(MjPerception p, double gameTime) {
+        return new MjPerception(p.time(), gameTime, p.playMode(), p.teamLeft(), p.teamRight(), 0, 0, p.quat(), p.pos(), p.gyro(), p.acc(),
+                p.joints(), p.touch(), p.seen(), p.heard(), p.heardSkipped());
+    }
+
+    @Test
+    void beforeTheirKickOffItBeamsOutOfTheCentreCircle() {
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        Pose2 ours = fc.kickOffSpot(), theirs = fc.kickOffSpot(true);
+        assertEquals(-1.1, ours.x(), 0.05, "our kick-off: the formation's forward spot behind the ball");
+        assertTrue(theirs.position().norm() >= 6.5 - 1e-9 && theirs.x() <= -1, "theirs: out of the circle and their half: " + theirs);
+        MjWorld w = new MjWorld("Phalanx");
+        w.update(at(10, "BeforeKickOff", -3, 21, -90, 0));
+        assertEquals(ours, fc.decide(w).beam(), "the first half: the left team kicks off");
+        MjBehaviour fc2 = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjWorld second = new MjWorld("Phalanx");
+        second.update(withGameTime(at(10, "BeforeKickOff", -3, 21, -90, 0), 300));
+        assertEquals(theirs, fc2.decide(second).beam(), "the second half: the right team kicks off");
+        MjBehaviour fc3 = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjWorld goal = new MjWorld("Phalanx");
+        goal.update(at(10, "Goal_Left", -3, 21, -90, 0));
+        assertEquals(theirs, fc3.decide(goal).beam(), "after our goal they kick off");
+        MjBehaviour fc4 = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjWorld conceded = new MjWorld("Phalanx");
+        conceded.update(at(10, "Goal_Right", -3, 21, -90, 0));
+        assertEquals(ours, fc4.decide(conceded).beam(), "after theirs we do");
+    }
+
+    @Test
+    void inTheirSetPieceNobodyGoesToTheBallAndEveryWalkKeepsOutOfTheCircle() {
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjWorld w = new MjWorld("Phalanx");
+        w.update(at(1, "free_kick_right", -10, 0, 0, 3));   // the ball 3 m ahead, at about (-6.9, 0)
+        MjBehaviour.Intent i = fc.decide(w, Action.of(7, ActionId.ON_BALL), true);
+        assertNull(i.kick());
+        // its place: on the ball's line to our goal 6.5 m from it, about (-13.4, 0): behind it, so it turns
+        assertEquals(0, i.vx(), 1e-9, "not toward the ball: " + i);
+        assertEquals(MjBehaviour.Config.DEFAULT.maxTurn(), Math.abs(i.turnDegPerS()), 1e-9);
+        MjWorld ours = new MjWorld("Phalanx");
+        ours.update(at(1, "free_kick_left", -10, 0, 0, 3));
+        assertEquals(fc.kickToGoal(ours.self(), ours.ball()), fc.decide(ours, Action.of(7, ActionId.ON_BALL), true), "our own: the taker goes");
+        // an order into the circle: to the nearest place outside it, round the circle
+        Vector2 ball = w.ball();
+        MjSetPiece rules = MjSetPiece.of("free_kick_right", 1, MjField.SSIM, ball, false, MjSetPiece.Config.DEFAULT);
+        Vector2 via = rules.via(w.self().position(), rules.allowed(new Vector2(-6, 1), MjField.SSIM), MjSetPiece.Config.DEFAULT);
+        assertTrue(via.distanceTo(ball) > 6.5, "a waypoint round the circle: " + via);
+        MjWorld play = new MjWorld("Phalanx");
+        play.update(at(1, "PlayOn", -10, 0, 0, 3));
+        assertEquals(fc.decide(play, Action.walkTo(7, via.x(), via.y(), 0), false), fc.decide(w, Action.walkTo(7, -6, 1, 0), false));
+        MjWorld kickOff = new MjWorld("Phalanx");
+        kickOff.update(at(1, "KickOff_Right", -3, 0, 0, 3));   // inside the circle: out, away from the ball
+        MjBehaviour.Intent out = fc.decide(kickOff, null, true);
+        assertTrue(out.vx() == 0 && out.turnDegPerS() != 0, "turns to walk back out: " + out);
+        MjWorld crept = new MjWorld("Phalanx");
+        crept.update(at(1, "KickOff_Right", -6.2, 0, 0, 0));   // the ball on the centre spot (the kick-off's drop), its place (-6.5, 0) 0.3 m behind
+        MjBehaviour.Intent hold = fc.decide(crept, null, true);
+        assertTrue(hold.vx() < 0 && Math.abs(hold.turnDegPerS()) < 5, "steps back facing the ball, no turning round: " + hold);
+        MjWorld held = new MjWorld("Phalanx");
+        held.update(at(1, "KickOff_Right", -6.45, 0, 0, 0));
+        assertSame(MjBehaviour.Intent.STAND, fc.decide(held, null, true), "within 0.1 m: stands");
+    }
+
+    @Test
+    void aPlayerBarredByTheDoubleTouchRuleKeepsOffTheBallWhateverItIsOrdered() {
+        MjBehaviour fc = new MjBehaviour(MjField.SSIM, 7, MjBehaviour.Config.DEFAULT);
+        MjWorld w = new MjWorld("Phalanx");
+        w.update(at(1, "PlayOn", -0.5, 0, 0, 0.4));   // at the ball, facing it
+        Action onBall = Action.of(7, ActionId.ON_BALL);
+        assertEquals(fc.kickToGoal(w.self(), w.ball()), fc.decide(w, onBall, true, false));
+        MjBehaviour.Intent i = fc.decide(w, onBall, true, true);
+        assertNull(i.kick());
+        assertNotEquals(fc.kickToGoal(w.self(), w.ball()), i);
+        assertTrue(i.vx() < 0 && i.vy() > 0 && i.turnDegPerS() == 0, "steps back and to the left off the ball ahead, not turning: " + i);
+        w.update(at(1.01, "PlayOn", -0.5, 0, -20, 0));   // turned 20 deg right: the ball (not seen again) 20 deg to its left
+        MjBehaviour.Intent right = fc.decide(w, onBall, true, true);
+        assertTrue(right.vx() < 0 && right.vy() < 0 && right.turnDegPerS() == 0, "to the right, away from it: " + right);
+        w.update(at(1.02, "PlayOn", -2.3, 0, 0, 2.2));
+        MjBehaviour.Intent away = fc.decide(w, onBall, true, true);
+        MjBehaviour.Intent spot = fc.decide(w, Action.of(7, ActionId.LOOK_STRAIGHT), false, false);
+        assertTrue(spot.vx() == MjBehaviour.Config.DEFAULT.maxForward(), "unbarred, its formation spot 1.1 m behind the ball: walks up: " + spot);
+        assertTrue(away.vx() > 0 && away.vx() <= MjBehaviour.Config.DEFAULT.fineSpeed() + 1e-9,
+                "barred, the same spot held 2 m off the ball: small steps up to there: " + away);
+        w.update(at(1.04, "PlayOn", -2.05, 0, 0, 1.95));
+        assertTrue(fc.decide(w, onBall, true, true).vx() < 0.1, "at 2 m: no further");
+    }
 }

@@ -75,6 +75,32 @@ class MjRuntimeTest {
                 "the opponent's order and the random frame fail the check (or the cycle bits)");
     }
 
+    @Test
+    void strangeSeenPlayersAreAnsweredAndNeverStopThePlayer() throws Exception {
+        MjRuntime r = new MjRuntime("Phalanx", 2, MjField.SSIM);
+        List<String> lines = Files.readAllLines(RECORDING);
+        String[] players = {
+                "(P (team Other)(id 1)(lfoot (pol NaN 0 0))(head (pol 1e308 -1e308 5)))",   // not numbers, absurdly far
+                "(P (team X)(id y)(rfoot (pol 0.2 0 -80))(rfoot (pol 0.3 1 -70)))",         // an id that is no number, a part twice
+                "(P (team Phalanx)(id 2)(lfoot (pol 1 2 3)))",                              // "ourselves"
+                "(P (team Other)(id 1))", "(P (id 3)(head (pol 1 0 0)))", "(P)",            // no parts; no team; nothing
+                "(P (team Other)(id 4)(lfoot (pol 1 2)))", "(P (team Other)(id 5)(lfoot (pol a b c)))"};
+        List<String> seeing = lines.stream().filter(l -> l.contains("(See ")).toList();
+        StringBuilder skipped = new StringBuilder();
+        for (int i = 0; i < 2 * players.length; i++) {
+            String p = players[i % players.length];
+            String message = seeing.get(10 + i).replace("(pm BeforeKickOff)", "(pm PlayOn)").replace("(See ", "(See " + p);
+            long before = r.malformed();
+            String reply = assertDoesNotThrow(() -> r.update(message), p);
+            assertTrue(reply.startsWith("(") && reply.endsWith(")"), reply);
+            if (r.malformed() > before && i < players.length) skipped.append(i).append(' ');
+        }
+        System.out.println("MjRuntimeTest: strange seen players the parser refuses (skipped whole): " + skipped);
+        assertEquals(2 * players.length, r.cycles());
+        assertTrue(r.world().players().stream().anyMatch(q -> q.id().equals("y") && !q.mate()), "a well-formed one is seen: " + r.world().players());
+        assertTrue(r.world().players().stream().allMatch(q -> q.parts().stream().allMatch(v -> v.isFinite())), "" + r.world().players());
+    }
+
     /** A recorded message in play with the torso lying (quaternion w x y z), still, every joint at 0. */
     private static String lying(String recorded, String quat) {
         return recorded.replace("(pm BeforeKickOff)", "(pm PlayOn)").replaceAll("\\(q [^)]*\\)", "(q " + quat + ")")

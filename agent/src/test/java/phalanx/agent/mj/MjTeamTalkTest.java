@@ -129,6 +129,10 @@ class MjTeamTalkTest {
         three.step(p);
         assertEquals(1, three.accepted());
         assertFalse(three.nearestToBall(p3, ball, 2.1), "player 5 is 1 m from the ball, we are 7 m");
+        assertFalse(three.mateAtBall(ball, 0.45, 1.0, 2.1), "1 m off is not at the ball (the double-touch rule's sign)");
+        assertTrue(three.mateAtBall(new Vector2(1.3, 0), 0.45, 1.0, 2.1), "0.3 m off is");
+        assertFalse(three.mateAtBall(new Vector2(1.3, 0), 0.45, 1.0, 3.1), "but not on a report 1.06 s old");
+        assertFalse(three.mateAtBall(null, 0.45, 1.0, 2.1));
         assertTrue(three.nearestToBall(p3, ball, 2.04 + MjTeamTalk.FRESH_S + 0.1), "his report went stale");
         byte[] keeper = mate.encode(new TeamMessage.Complete(1, 1.5, 0, 0, 2, 0), 102);
         p = at(2.08, "PlayOn", p3, 0, List.of(new MjPerception.Heard(0, keeper)));
@@ -173,5 +177,8 @@ class MjTeamTalkTest {
         assertEquals(w.ball().x(), c.ballX(), 1e-9);
         w.update(MjBehaviourTest.at(2.1, "PlayOn", -5, 2, 0, 0));
         assertInstanceOf(TeamMessage.Location.class, MjTeamTalk.report(4, w), "the ball last seen 1.08 s ago: not reported");
+        w.update(MjBehaviourTest.at(2.12, "PlayOn", -5, 2, 0, 3));
+        assertEquals(new TeamMessage.Unaware(4, false), MjTeamTalk.report(4, w, true),
+                "barred by the double-touch rule: X, so that the coordinator gives On Ball to another");
     }
 }

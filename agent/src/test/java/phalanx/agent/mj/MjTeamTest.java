@@ -2,29 +2,19 @@ package phalanx.agent.mj;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import phalanx.agent.PlayerOptions;
 import phalanx.agent.team.TeamChannel;
 import phalanx.comm.team.Action;
 import phalanx.comm.team.ActionId;
 import phalanx.match.MjServerProcess;
-import phalanx.match.ServerProcess;
 import phalanx.model.field.FieldSpec;
 import phalanx.model.field.MjField;
 import phalanx.model.field.Pose2;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.function.BooleanSupplier;
 
 import static org.junit.jupiter.api.Assertions.*;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * The whole team on the real rcssservermj (issue 20's CI test): 7 T1 players connect, parse every message, beam
@@ -39,26 +29,12 @@ class MjTeamTest {
 
     @Test
     void aFullTeamConnectsBeamsAndFollowsTheCoordinatorsRounds(@TempDir Path tmp) throws Exception {
-        Optional<Path> exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir")));
-        assumeTrue(exe.isPresent(), "rcssservermj not found ($PHALANX_RCSSSERVERMJ, .venv/bin, PATH): run scripts/setup.sh");
-        // agent port 5300-5349, monitor 50 above: clear of the SimSpark games' ports (3500-3799, 4100-4101) beside it
-        int port = ServerProcess.freePortPair(5300, 50, 50);
-        MjServerProcess server = MjServerProcess.startReady(exe.get(), new MjServerProcess.Settings(port, port + 50, true, false), tmp,
-                90_000, started -> { }, why -> System.out.println("rcssservermj started again: " + why));
         long began = System.nanoTime();
         MjField field = MjField.SSIM;
-        List<MjRuntime> team = new ArrayList<>();
-        ExecutorService pool = Executors.newFixedThreadPool(field.players());
-        try {
-            List<Future<MjPlayer.Outcome>> outcomes = new ArrayList<>();
-            for (int n = 1; n <= field.players(); n++) {
-                MjRuntime r = new MjRuntime(TEAM, n, field);
-                team.add(r);
-                PlayerOptions o = PlayerOptions.parse("--port", String.valueOf(port), "--team", TEAM, "--unum", String.valueOf(n), "--server", "mj");
-                outcomes.add(pool.submit(() -> MjPlayer.play(o, r)));
-            }
+        try (MjServerTeam t = MjServerTeam.start(tmp, TEAM, 0)) {
+            List<MjRuntime> team = t.team;
+            MjServerProcess server = t.server;
             // every player in and on its spot, before the kick-off
-            waitFor(() -> team.stream().allMatch(r -> r.cycles() > 150), "all players running 3 s", outcomes, server);
             for (MjRuntime r : team) {
                 Pose2 spot = r.behaviour().kickOffSpot(), at = r.world().self();
                 assertEquals(1, r.world().side(), "player " + r.unum() + " on the left");
@@ -74,7 +50,7 @@ class MjTeamTest {
             long start = first.cycles();
             server.command("(kickOff Left)");
             // the coordinator's first round in the kick-off sends one player to the ball
-            waitFor(() -> onBall(fieldPlayers) != null, "an On Ball order after the kick-off", outcomes, server);
+            t.waitFor(() -> onBall(fieldPlayers) != null, "an On Ball order after the kick-off");
             MjRuntime striker = onBall(fieldPlayers);
             assertNotNull(striker.world().ball(), "player " + striker.unum() + ", ordered On Ball, sees the ball");
             double before = striker.world().self().position().distanceTo(striker.world().ball());
@@ -82,7 +58,7 @@ class MjTeamTest {
             double closest = before;
             for (int k = 1; k <= 10; k++) {   // the closest approach, sampled each game second
                 long until = ordered + 50L * k;
-                waitFor(() -> striker.cycles() > until, "game second " + k + " after the On Ball order", outcomes, server);
+                t.waitFor(() -> striker.cycles() > until, "game second " + k + " after the On Ball order");
                 closest = Math.min(closest, striker.world().self().position().distanceTo(striker.world().ball()));
             }
             String mode = first.world().playMode();
@@ -125,9 +101,6 @@ class MjTeamTest {
                             + "%d actions sent; orders received (player:count last):%s; On Ball player %d %.2f m from the ball, %.2f m at the closest; "
                             + "%.0f s in all%n", cycles, rounds, (double) reports / rounds, keeper.actionsDispatched(), orders, striker.unum(),
                     before, after, (System.nanoTime() - began) / 1e9);
-        } finally {
-            server.stop();
-            pool.shutdownNow();
         }
     }
 
@@ -138,26 +111,5 @@ class MjTeamTest {
             if (a != null && a.id() == ActionId.ON_BALL) return r;
         }
         return null;
-    }
-
-    private static void waitFor(BooleanSupplier done, String what, List<Future<MjPlayer.Outcome>> players,
-                                MjServerProcess server) throws Exception {
-        // a guard against a hang only (10 min), not a speed figure
-        long deadline = System.nanoTime() + 600_000_000_000L;
-        while (!done.getAsBoolean()) {
-            for (Future<MjPlayer.Outcome> f : players) {
-                if (f.isDone()) fail("a player ended before " + what + ": " + f.get() + "; server log: " + read(server.log()));
-            }
-            if (System.nanoTime() > deadline) fail("no " + what + " within 10 minutes; server log: " + read(server.log()));
-            Thread.sleep(50);
-        }
-    }
-
-    private static String read(Path log) {
-        try {
-            return Files.exists(log) ? Files.readString(log) : "(no log)";
-        } catch (Exception e) {
-            return "(unreadable: " + e + ")";
-        }
     }
 }
