@@ -53,7 +53,17 @@ class MjKickTest {
             waitFor(() -> fc.cycles() > 150, "the forward beamed and standing", player, server);
             server.command("(kickOff Left)");
             long start = fc.cycles();
-            waitFor(() -> fc.kicks() > 0 || fc.cycles() > start + 3000, "a kick or 60 game seconds", player, server);
+            waitFor(() -> fc.kicks() > 0 || fc.touchBars() > 0 || fc.cycles() > start + 3000, "a kick, a touch bar or 60 game seconds", player, server);
+            // Since the set-piece rules (MjTouchRule), a push on the approach is the kick-off's one touch: alone on the
+            // field, the forward may not touch the ball again (a double-touch free kick), so there is no kick to measure
+            // in that run (about 2 in 3 runs in session 25's clean-clone CI). Then it must not touch again: skipped, not failed.
+            if (fc.kicks() == 0 && fc.touchBars() > 0) {
+                long barredAt = fc.cycles();
+                waitFor(() -> fc.cycles() > barredAt + 250, "5 game seconds after the bar", player, server);
+                assertEquals(0, fc.kicks(), "a barred forward does not kick");
+                org.junit.jupiter.api.Assumptions.abort("the forward's approach pushed the ball (the kick-off's one touch); "
+                        + "no kick allowed after it, so none measured in this run");
+            }
             assertTrue(fc.kicks() > 0, "the forward kicked within 60 game seconds; it is at " + fc.world().self()
                     + ", the ball at " + fc.world().ball() + (fc.kicksRefused() > 0 ? ", kicks refused " + fc.kicksRefused() : ""));
             double[] before = ball.clone();
