@@ -151,7 +151,7 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
          * turnAtSpeed 30: defaults() turned 30 deg/s commanded on the spot without a fall.
          */
         public static Blend agent() {
-            return new Blend(balancedWalk(), turnInPlace(), 5.0, 0.05, 10, 0.15, 0.25);
+            return new Blend(balancedWalk(), turnInPlace(), 5.0, 0.05, 10, 0.15, 0.2);
         }
 
         /** The largest turn rate (deg/s) allowed at this speed (m/s). */
