@@ -55,9 +55,10 @@ final class MjBehaviour {
     record Config(double maxForward, double maxTurn, double turnFirstDeg, double arriveM, double beamToleranceM,
                   double beamRepeatS, double kickBallX, double kickBallY, double kickDirectionDeg, double kickBackoffM,
                   double kickToleranceM, double kickAimDeg, double approachM, double fineSpeed) {
-        // motion/README.md "T1 gait", the balanced preset: 0.5 m/s walking and 60 °/s commanded (38 °/s turned)
-        // with no fall; the kick's figures: motion/README.md "T1 kick"
-        static final Config DEFAULT = new Config(0.5, 60, 35, 0.4, 0.1, 1.0,
+        // motion/README.md "T1 gait", the blended gait: 0.6 m/s commanded walks 0.63 m/s, 120 °/s commanded turns
+        // 63 °/s on the spot (the gait holds turns within 10 °/s above 0.15 m/s), no fall; the kick's figures:
+        // motion/README.md "T1 kick"
+        static final Config DEFAULT = new Config(0.6, 120, 35, 0.4, 0.1, 1.0,
                 T1KickConfig.defaults().ballX(), T1KickConfig.defaults().ballY(), T1KickConfig.defaults().directionDeg(),
                 0.0, 0.05, 20, 0.6, 0.2);  // kickBackoffM: 0.06 and 0.03 tried in MjKickTest, worse (motion/README.md "T1 kick")
     }
@@ -74,6 +75,9 @@ final class MjBehaviour {
      * second the right team kicks off (MjMatch's `(kickOff Right)`, as on SimSpark); no one tells us before it is given.
      */
     static final double HALF_S = 300;
+
+    /** How fast the blended T1 gait slows down, m/s/s (T1GaitConfig.Blend.agent(): faster fell after walking). */
+    static final double BRAKE_MPS2 = phalanx.motion.t1.T1GaitConfig.Blend.agent().decel();
 
     private final MjField field;
     private final StretchedFormation formation;
@@ -262,11 +266,15 @@ final class MjBehaviour {
         }
         double bearing = rel.angleDeg();
         double turn = Math.max(-c.maxTurn(), Math.min(c.maxTurn(), bearing));
-        if (Math.abs(bearing) > c.turnFirstDeg()) return new Intent(null, 0, 0, turn);
-        return new Intent(null, Math.min(c.maxForward(), dist), 0, turn);
+        // on the spot the gait turns about half the command (motion/README.md "T1 gait"), and slows its turn over a
+        // second: twice the bearing, not the full rate, so that it does not turn far past it
+        if (Math.abs(bearing) > c.turnFirstDeg()) return new Intent(null, 0, 0, Math.max(-c.maxTurn(), Math.min(c.maxTurn(), 2 * bearing)));
+        // the gait slows down at only BRAKE_MPS2: slow down in time to be at fineSpeed by approachM
+        double brake = Math.sqrt(c.fineSpeed() * c.fineSpeed() + 2 * BRAKE_MPS2 * Math.max(0, dist - c.approachM()));
+        return new Intent(null, Math.min(c.maxForward(), Math.min(dist, brake)), 0, turn);
     }
 
     private Intent turnInPlace(Pose2 self, double bearing) {
-        return new Intent(null, 0, 0, Math.signum(bearing) * c.maxTurn());
+        return new Intent(null, 0, 0, Math.max(-c.maxTurn(), Math.min(c.maxTurn(), 2 * bearing)));
     }
 }

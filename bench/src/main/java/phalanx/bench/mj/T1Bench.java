@@ -36,6 +36,9 @@ import java.util.Optional;
  *       torso_pos over the walking time; a fall (torso up-axis tilted more than 60 deg) is counted, the robot
  *       is beamed back and walks on.</li>
  *   <li>turn: --turn deg/s on the spot for --seconds (default 20); mean turn rate from torso_quat's yaw.</li>
+ *   <li>walkturn: --phase seconds (5) of walking at --speed, then as long turning at --turn on the spot, in turn for
+ *       --seconds (default 60), as the agent switches; the walking phases' speed along the torso's heading and the
+ *       turning phases' rate, each over its phases, and the falls.</li>
  * </ul>
  * Each walk and turn trial starts with 2 s of standing after the beam (not counted).
  */
@@ -84,6 +87,8 @@ public final class T1Bench {
                          double lateral, double yawDeg) {
         String line() {
             return switch (trial) {
+                case "walkturn" -> String.format(Locale.ROOT, "walkturn %5.1f s  walking %.3f m/s (commanded %.2f)  turning %.1f deg/s (commanded %.1f)  falls %d",
+                        seconds, measured, commanded, yawDeg, lateral, falls);
                 case "stand" -> String.format(Locale.ROOT, "stand  %5.1f s  %s", seconds, falls == 0 ? "stood" : "FELL (" + falls + ")");
                 case "walk" -> String.format(Locale.ROOT, "walk   %5.1f s  commanded %.2f m/s  measured %.3f m/s  lateral drift %.3f m/s  yaw drift %.1f deg  falls %d",
                         seconds, commanded, measured, lateral, yawDeg, falls);
@@ -217,6 +222,52 @@ public final class T1Bench {
         if (trial.equals("walk"))
             return new Result(trial, seconds, falls, speed, along / time, lateral / time, Math.toDegrees(yawSum));
         return new Result(trial, seconds, falls, turnDegS, Math.toDegrees(yawSum) / time, Math.hypot(along, lateral) / time, 0);
+    }
+
+    /**
+     * Walk and turn in turn: phaseS of walking forward at speed, phaseS of turning on the spot at turnDegS, and so
+     * on. Per cycle the torso's progress along its own heading counts in the walking phases and its yaw change in the
+     * turning ones (so the speed includes the first, slower steps of each walking phase). A fall is counted, the
+     * robot beamed back, and the schedule goes on.
+     */
+    Result walkTurn(T1Gait gait, double speed, double turnDegS, double seconds, double phaseS) throws IOException {
+        int falls = 0;
+        double walked = 0, walkTime = 0, turned = 0, turnTime = 0;
+        reset(gait, -10, 0, 0);
+        double[] last = p.pos().clone();
+        double lastYaw = yaw(p.quat());
+        int n = (int) Math.round(seconds / 0.02), perPhase = (int) Math.round(phaseS / 0.02);
+        for (int i = 0; i < n; i++) {
+            boolean walking = (i / perPhase) % 2 == 0;
+            feed(gait);
+            cycle(joints(walking ? gait.next(speed, 0, 0) : gait.next(0, 0, turnDegS)));
+            double yw = yaw(p.quat()), dyaw = yw - lastYaw;
+            while (dyaw > Math.PI) dyaw -= 2 * Math.PI;
+            while (dyaw < -Math.PI) dyaw += 2 * Math.PI;
+            double h = lastYaw + dyaw / 2;
+            if (walking) {
+                walked += Math.cos(h) * (p.pos()[0] - last[0]) + Math.sin(h) * (p.pos()[1] - last[1]);
+                walkTime += 0.02;
+            } else {
+                turned += dyaw;
+                turnTime += 0.02;
+            }
+            last = p.pos().clone();
+            lastYaw = yw;
+            if (verbose && i % TRACE_EVERY == 0) trace(walking ? "walk" : "turn", i * 0.02);
+            if (tiltDeg(p.quat()) > FALL_TILT_DEG) {
+                falls++;
+                if (verbose) System.out.printf(Locale.ROOT, "  fell at t %.2f (%s)%n", i * 0.02, walking ? "walking" : "turning");
+                if (i < n - 1) {
+                    reset(gait, -10, 0, 0);
+                    last = p.pos().clone();
+                    lastYaw = yaw(p.quat());
+                }
+            }
+        }
+        // commanded turn in `lateral`, measured turn rate in `yawDeg`
+        return new Result("walkturn", seconds, falls, speed, walked / Math.max(walkTime, 1e-9), turnDegS,
+                Math.toDegrees(turned) / Math.max(turnTime, 1e-9));
     }
 
     /** One kick of the kick trial: the ball's travel (m), its direction against the robot's heading (deg), a fall. */
@@ -427,6 +478,8 @@ public final class T1Bench {
         int port = 4100;
         boolean verbose = false;
         T1GaitConfig config = T1GaitConfig.defaults();
+        T1GaitConfig.Blend blend = null;
+        double phase = 5;
         T1KickConfig kickConfig = T1KickConfig.defaults();
         int kicks = 10;
         double jitter = 0;
@@ -446,8 +499,33 @@ public final class T1Bench {
                     case "walk" -> T1GaitConfig.defaults();
                     case "balanced" -> T1GaitConfig.balanced();
                     case "turn" -> T1GaitConfig.turnInPlace();
-                    default -> throw new IllegalArgumentException("--preset walk|balanced|turn");
+                    case "blend" -> {
+                        blend = T1GaitConfig.Blend.agent();
+                        yield T1GaitConfig.balanced();   // the agent's stand (and kick) config
+                    }
+                    default -> throw new IllegalArgumentException("--preset walk|balanced|turn|blend");
                 };
+                case "--walk-set", "--turn-set" -> {
+                    if (blend == null) throw new IllegalArgumentException(args[i] + " after --preset blend");
+                    String[] kv = args[i + 1].split("=", 2);
+                    double v = Double.parseDouble(kv[1]);
+                    blend = args[i].equals("--walk-set") ? blend.withWalk(blend.walk().with(kv[0], v)) : blend.withTurn(blend.turn().with(kv[0], v));
+                    i++;
+                }
+                case "--blend-rate" -> {
+                    if (blend == null) throw new IllegalArgumentException("--blend-rate after --preset blend");
+                    blend = blend.withRate(Double.parseDouble(args[++i]));
+                }
+                case "--turn-at-speed" -> {
+                    if (blend == null) throw new IllegalArgumentException("--turn-at-speed after --preset blend");
+                    String[] v = args[++i].split(",");
+                    blend = blend.withTurnAtSpeed(Double.parseDouble(v[0]), Double.parseDouble(v[1]));
+                }
+                case "--decel" -> {
+                    if (blend == null) throw new IllegalArgumentException("--decel after --preset blend");
+                    blend = blend.withDecel(Double.parseDouble(args[++i]));
+                }
+                case "--phase" -> phase = Double.parseDouble(args[++i]);
                 case "--set" -> {
                     String[] kv = args[++i].split("=", 2);
                     config = config.with(kv[0], Double.parseDouble(kv[1]));
@@ -475,12 +553,19 @@ public final class T1Bench {
                 case "--verbose" -> verbose = true;
                 case "-h", "--help" -> {
                     System.out.println("""
-                            usage: scripts/phalanx bench t1 [--trial stand|walk|turn|kick|all] [--seconds S] [--speed M_PER_S]
-                                   [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn] [--set CONFIG_FIELD=VALUE]...
+                            usage: scripts/phalanx bench t1 [--trial stand|walk|turn|walkturn|kick|getup|all] [--seconds S] [--speed M_PER_S]
+                                   [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn|blend] [--set CONFIG_FIELD=VALUE]...
+                                   [--walk-set FIELD=VALUE]... [--turn-set FIELD=VALUE]... [--blend-rate PER_S] [--turn-at-speed DEG_S,M_S] [--decel M_S2] [--phase S]
                                    [--kicks N] [--foot left|right|both] [--ball-jitter M] [--kick KICK_FIELD=VALUE]... [--verbose]
                             Starts its own rcssservermj (ports P, P+1; default 4100) and runs the T1 gait's trials:
                             stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.
                             --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.
+                            --preset blend: the agent's gait, T1GaitConfig.Blend.agent() (defaults() walking, turnInPlace()
+                            turning, blended by the command; balanced() standing): --walk-set/--turn-set change its
+                            presets, --blend-rate its rate (share per s), --turn-at-speed its turn limit at and above a speed, --decel its slowing down,
+                            --set its stand config.
+                            walkturn (not in all): --phase S (5) walking at --speed, --phase S turning at --turn, in turn,
+                            --seconds (60); the walking phases' speed, the turning phases' rate, falls.
                             kick (not in all): --kicks N (10) kicks with --foot (right; both alternates), the ball placed in
                             front of the foot (up to --ball-jitter M off it in x and y, seeded); per kick the ball's travel,
                             its direction error and a fall; --kick changes
@@ -527,7 +612,7 @@ public final class T1Bench {
                         throw new IOException("rcssservermj dropped the T1 five times; last log: " + Files.readString(server.log()), e);
                     }
                     for (String t : trials) {
-                        T1Gait gait = new T1Gait(config);
+                        T1Gait gait = blend != null ? new T1Gait(blend, config) : new T1Gait(config);
                         if (t.equals("getup")) {
                             b.getUpTrial(gait, T1GetUp.load(motionDir, 0.02), getups, lying, seed);
                             continue;
@@ -541,6 +626,7 @@ public final class T1Bench {
                             case "stand" -> b.stand(gait, seconds > 0 ? seconds : 30);
                             case "walk" -> b.move(gait, "walk", speed, 0, seconds > 0 ? seconds : 60);
                             case "turn" -> b.move(gait, "turn", 0, turn, seconds > 0 ? seconds : 20);
+                            case "walkturn" -> b.walkTurn(gait, speed, turn, seconds > 0 ? seconds : 60, phase);
                             default -> throw new IllegalArgumentException("unknown trial " + t);
                         };
                         results.add(r);
@@ -564,6 +650,8 @@ public final class T1Bench {
             switch (r.trial()) {
                 case "stand" -> sb.append(r.falls() == 0 ? " stand ok;" : " stand FELL;");
                 case "walk" -> sb.append(String.format(Locale.ROOT, " walk %.3f m/s (cmd %.2f), %d falls in %.0f s;", r.measured(), r.commanded(), r.falls(), r.seconds()));
+                case "walkturn" -> sb.append(String.format(Locale.ROOT, " walkturn %.3f m/s (cmd %.2f) / %.1f deg/s (cmd %.0f), %d falls in %.0f s;",
+                        r.measured(), r.commanded(), r.yawDeg(), r.lateral(), r.falls(), r.seconds()));
                 default -> sb.append(String.format(Locale.ROOT, " turn %.1f deg/s (cmd %.0f), %d falls in %.0f s;", r.measured(), r.commanded(), r.falls(), r.seconds()));
             }
         }

@@ -12,6 +12,10 @@ import java.util.List;
  *
  * <p>{@link #next} at zero velocity steps on the spot; {@link #stand()} holds a still pose (and resets the
  * gait, so the next {@code next} starts a fresh step with the left foot as support).
+ *
+ * <p>Built on a {@link T1GaitConfig.Blend}, every cycle's config lies between the blend's walk and turn presets by
+ * the command's turn share (moving at most the blend's rate per second); {@link #stand()} is then the stand
+ * config's pose, and the first step of a walk moves the feet from its stance to the walking config's.
  */
 public final class T1Gait {
     private static final String[] LEFT = {"lle1", "lle2", "lle3", "lle4", "lle5", "lle6"};
@@ -20,7 +24,14 @@ public final class T1Gait {
     /** Largest feedback correction of a joint, rad. */
     static final double MAX_CORRECTION = 0.2;
 
-    private final T1GaitConfig c;
+    /** This cycle's config: the one preset, or the blend at {@link #share}. */
+    private T1GaitConfig c;
+    private final T1GaitConfig.Blend blend;
+    /** The stand pose's config (the one preset, or the blend's stand); its stance is where a walk starts from. */
+    private final T1GaitConfig standConfig;
+    /** The turn share of the blend (0 walk preset .. 1 turn preset), and the share {@link #c} was made for. */
+    private double share, madeFor;
+    private final double maxVx, maxVy, maxTurn;
     private final T1LegKinematics leftLeg, rightLeg;
     private final double[] qLeft = new double[6], qRight = new double[6];
     private final double[] prevLeft = new double[6], prevRight = new double[6];
@@ -37,7 +48,22 @@ public final class T1Gait {
     private double lastSway, lastLiftLeft, lastLiftRight;
 
     public T1Gait(T1GaitConfig config) {
+        this(config, null, config);
+    }
+
+    /** Blending the walk and turn presets by the command; {@code stand} gives the still pose (and the kick's start). */
+    public T1Gait(T1GaitConfig.Blend blend, T1GaitConfig stand) {
+        this(blend.walk(), blend, stand);
+    }
+
+    private T1Gait(T1GaitConfig config, T1GaitConfig.Blend blend, T1GaitConfig stand) {
         this.c = config;
+        this.blend = blend;
+        this.standConfig = stand;
+        // the commands are limited by the widest preset: the share, not the limit, decides how it walks
+        this.maxVx = blend == null ? config.maxVx() : Math.max(blend.walk().maxVx(), blend.turn().maxVx());
+        this.maxVy = blend == null ? config.maxVy() : Math.max(blend.walk().maxVy(), blend.turn().maxVy());
+        this.maxTurn = blend == null ? config.maxTurn() : Math.max(blend.walk().maxTurn(), blend.turn().maxTurn());
         this.leftLeg = new T1LegKinematics(config, true);
         this.rightLeg = new T1LegKinematics(config, false);
         double[] init = {-0.3, 0, 0, 0.6, -0.3, 0};
@@ -46,6 +72,9 @@ public final class T1Gait {
     }
 
     public T1GaitConfig config() { return c; }
+
+    /** The blend's turn share now (0: the walk preset, 1: the turn preset; 0 without a blend). */
+    public double turnShare() { return blend == null ? 0 : share; }
 
     /** Torso attitude for the feedback: roll and pitch (rad, from torso_quat), their rates (rad/s, torso_gyro). */
     public void feedback(double rollRad, double pitchRad, double rollRateRadS, double pitchRateRadS) {
@@ -64,15 +93,37 @@ public final class T1Gait {
         java.util.Arrays.fill(foot, 0);
         java.util.Arrays.fill(footStart, 0);
         lastSway = lastLiftLeft = lastLiftRight = 0;
+        if (blend != null) {
+            c = standConfig;
+            share = 0;
+            madeFor = -1;
+        }
         return pose(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, false);
     }
 
     /** One 0.02 s cycle of walking at the given command (clamped to the config's limits). */
     public List<JointCommand> next(double vxMps, double vyMps, double turnDegPerS) {
         double ax = c.accel() * c.dt();
-        vx = approach(vx, clamp(vxMps, -c.maxVx() / 2, c.maxVx()), ax);
-        vy = approach(vy, clamp(vyMps, -c.maxVy(), c.maxVy()), ax);
-        turn = approach(turn, Math.toRadians(clamp(turnDegPerS, -c.maxTurn(), c.maxTurn())), Math.toRadians(200 * c.accel() * c.dt()));
+        double turnTarget = clamp(turnDegPerS, -maxTurn, maxTurn), turnStep = Math.toRadians(200 * c.accel() * c.dt());
+        if (blend == null) {
+            vx = approach(vx, clamp(vxMps, -maxVx / 2, maxVx), ax);
+            vy = approach(vy, clamp(vyMps, -maxVy, maxVy), ax);
+        } else {
+            // the speed grows only while the turn now is within what the new speed allows; the turn is held within
+            // what the speed allows (T1GaitConfig.Blend): walking and turning fast do not mix
+            double tx = clamp(vxMps, -maxVx / 2, maxVx), ty = clamp(vyMps, -maxVy, maxVy), dx = blend.decel() * c.dt();
+            // slowing down at the blend's decel (slower than accel: stopping from 0.6 m/s at 0.5 m/s/s fell)
+            double nx = approach(vx, tx, Math.abs(tx) < Math.abs(vx) ? dx : ax), ny = approach(vy, ty, Math.abs(ty) < Math.abs(vy) ? dx : ax);
+            boolean faster = Math.hypot(nx, ny) > Math.hypot(vx, vy);
+            if (!faster || Math.abs(Math.toDegrees(turn)) <= blend.allowedTurn(Math.hypot(nx, ny)) + 1e-9) {
+                vx = nx;
+                vy = ny;
+            }
+            double lim = blend.allowedTurn(Math.hypot(vx, vy));
+            turnTarget = clamp(turnTarget, -lim, lim);
+        }
+        turn = approach(turn, Math.toRadians(turnTarget), turnStep);
+        if (blend != null) reblend();
         t += c.dt();
         if (t >= c.stepTime() - 1e-9) {
             t -= c.stepTime();
@@ -84,10 +135,10 @@ public final class T1Gait {
         double ts = c.stepTime();
         int sup = leftSupport ? 0 : 3, sw = leftSupport ? 3 : 0;
         // support foot: linearly back at the commanded velocity
-        double[] supEnd = {-vx * ts / 2, -vy * ts / 2, -turn * ts / 2};
+        double[] supEnd = {-vx * c.strideScale() * ts / 2, -vy * ts / 2, -turn * ts / 2};
         // capture-step-like feedback: step further towards where the torso leans
         double lean = pitch - Math.toRadians(c.torsoPitchDeg());
-        double[] swEnd = {vx * ts / 2 + clamp(c.stepPitchGain() * lean, -0.08, 0.08),
+        double[] swEnd = {vx * c.strideScale() * ts / 2 + clamp(c.stepPitchGain() * lean, -0.08, 0.08),
                 vy * ts / 2 - clamp(c.stepRollGain() * roll, -0.05, 0.05), turn * ts / 2};
         double d = c.doubleSupport();
         double u = clamp((s - d / 2) / (1 - d), 0, 1);
@@ -102,12 +153,32 @@ public final class T1Gait {
             foot[sw + k] = footStart[sw + k] + (swEnd[k] - footStart[sw + k]) * smooth;
         }
         double ramp = Math.min(1.0, (steps + s) / 1.0);
+        if (blend != null) {
+            // the first step moves the stance from the stand config's to the walking one's, as sway and lift grow
+            T1GaitConfig st = standConfig;
+            stanceX = st.footX() + (c.footX() - st.footX()) * ramp;
+            stanceY = st.footY() + (c.footY() - st.footY()) * ramp;
+            stanceZ = st.footZ() + (c.footZ() - st.footZ()) * ramp;
+        }
         // lateral sway over the support foot: the pendulum's cosh shape, 0 at the step's ends, c.sway() mid-step
         double shape = (1 - Math.cosh((s - 0.5) * ts / tc) / Math.cosh(half)) / (1 - 1 / Math.cosh(half));
         double sway = ramp * c.sway() * shape * (leftSupport ? 1 : -1);
         double lift = ramp * c.lift() * Math.sin(Math.PI * u);
         double liftL = leftSupport ? 0 : lift, liftR = leftSupport ? lift : 0;
         return pose(foot[0], foot[1], foot[2], foot[3], foot[4], foot[5], sway, liftL, liftR, ramp, true);
+    }
+
+    private double stanceX = Double.NaN, stanceY, stanceZ;
+
+    /** Moves the turn share towards the ramped command's (at most the blend's rate) and makes this cycle's config. */
+    private void reblend() {
+        double a = Math.abs(Math.toDegrees(turn)) / blend.turn().maxTurn();
+        double b = Math.hypot(vx / blend.walk().maxVx(), vy / blend.walk().maxVy());
+        if (a + b >= blend.stepOnSpot()) share = approach(share, a / (a + b), blend.ratePerS() * c.dt());
+        if (share != madeFor) {
+            c = blend.walk().lerp(blend.turn(), share);
+            madeFor = share;
+        }
     }
 
     /** Whether the left foot is the support foot in the current step. */
@@ -131,9 +202,15 @@ public final class T1Gait {
         ryaw = Math.min(ryaw, 0.35);
         // a foot turned by yaw relative to the torso sits rotated about the torso's vertical axis too, so that
         // turning pivots about the torso, not about the support ankle
-        double[] pl = rotate(c.footX() + lx, c.footY() + ly, lyaw), pr = rotate(c.footX() + rx, -c.footY() + ry, ryaw);
-        leftLeg.inverse(pl[0], pl[1] - sway, c.footZ() + liftL, lyaw, qLeft);
-        rightLeg.inverse(pr[0], pr[1] - sway, c.footZ() + liftR, ryaw, qRight);
+        double fx = c.footX(), fy = c.footY(), fz = c.footZ();
+        if (blend != null && walking) {
+            fx = stanceX;
+            fy = stanceY;
+            fz = stanceZ;
+        }
+        double[] pl = rotate(fx + lx, fy + ly, lyaw), pr = rotate(fx + rx, -fy + ry, ryaw);
+        leftLeg.inverse(pl[0], pl[1] - sway, fz + liftL, lyaw, qLeft);
+        rightLeg.inverse(pr[0], pr[1] - sway, fz + liftR, ryaw, qRight);
         double[] l = qLeft.clone(), r = qRight.clone();
         // feedback: torso pitched forward (pitch > 0, about +y) -> ankle pitch up by pitchGain x error: the foot turns
         // toes-down against the shank, which pushes the body back; roll likewise at the ankle roll

@@ -47,6 +47,8 @@ package phalanx.motion.t1;
  * @param hipRollGain       hip roll correction per rad of torso roll (rad/rad)
  * @param torsoPitchDeg     wanted torso pitch (forward lean, deg) for the feedback's reference
  * @param dt                control cycle, s (rcssservermj: 0.02)
+ * @param strideScale       forward stride per commanded speed (1: the support foot moves back at the command; the
+ *                          walk goes a little slower than commanded, so a walking preset may ask for more)
  */
 public record T1GaitConfig(double waistX, double waistZ, double hipY, double hipPitchToRoll, double hipRollToYaw,
                            double yawToKneeX, double yawToKneeZ, double shank, double anklePitchToRoll,
@@ -60,7 +62,7 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                            double stepPitchGain, double stepRollGain,
                            double comHeight, double lipmBlend,
                            double hipPitchGain, double hipRollGain,
-                           double torsoPitchDeg, double dt) {
+                           double torsoPitchDeg, double dt, double strideScale) {
 
     /**
      * Geometry from robot.xml; gains: hips/knees booster_gym's 200, ankles raised to 200 (at 80 the 20 N m ankle
@@ -81,7 +83,8 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
                 0.1459, -0.3770,                                             // search (hand start 0, 0)
                 0.55, 0.9254,                                                // CoM height estimate; search (start 1)
                 0.5428, 0.3583,                                              // search (start 0, 0)
-                -2.8147, 0.02);                                              // search (start 0); rcssservermj cycle
+                -2.8147, 0.02,                                               // search (start 0); rcssservermj cycle
+                1.0);
     }
 
     /**
@@ -107,6 +110,71 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
         return balanced().with("stepTime", 0.2825).with("sway", 0.0374).with("footX", 0.0323).with("footY", 0.0923)
                 .with("doubleSupport", 0.0).with("pitchGain", 1.7554).with("pitchRateGain", 0.0442)
                 .with("rollRateGain", -0.1).with("lipmBlend", 0.6968).with("torsoPitchDeg", -5.0);
+    }
+
+    /**
+     * This config moved {@code share} of the way to {@code other}, every field linearly (0: this, 1: other). The
+     * geometry fields are the same in every preset, so only the gait values change.
+     */
+    public T1GaitConfig lerp(T1GaitConfig other, double share) {
+        java.lang.reflect.RecordComponent[] rc = T1GaitConfig.class.getRecordComponents();
+        Object[] args = new Object[rc.length];
+        Class<?>[] types = new Class<?>[rc.length];
+        try {
+            for (int i = 0; i < rc.length; i++) {
+                types[i] = double.class;
+                double a = (double) rc[i].getAccessor().invoke(this), b = (double) rc[i].getAccessor().invoke(other);
+                args[i] = share <= 0 ? a : share >= 1 ? b : a + (b - a) * share;
+            }
+            return T1GaitConfig.class.getDeclaredConstructor(types).newInstance(args);
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /**
+     * Two presets the gait blends by the command (issue 20: no single preset both walks 0.6 m/s and turns 60 deg/s):
+     * {@code walk} for walking, {@code turn} for turning on the spot. The turn share of a command is
+     * {@code a / (a + b)}, a = |turn| / turn.maxTurn(), b = |(vx / walk.maxVx(), vy / walk.maxVy())| (on the ramped
+     * commands); below {@code stepOnSpot} for a + b the share is kept (stepping on the spot has no direction). The
+     * share moves at most {@code ratePerS} per second. Walking and turning fast do not mix (the walk preset falls
+     * turning, the turn preset walking; bench t1 walkturn fell 11-16 times in 60 s when both ramped at once): at a speed
+     * of {@code fullSpeed} m/s or more the ramped turn is held within {@code turnAtSpeed} deg/s, at 0 the turn
+     * preset's maxTurn, linearly between, and the speed grows only as far as the turn allows; so a switch from walking
+     * to turning first slows down, and one from turning to walking first stops turning.
+     */
+    public record Blend(T1GaitConfig walk, T1GaitConfig turn, double ratePerS, double stepOnSpot,
+                        double turnAtSpeed, double fullSpeed, double decel) {
+        /**
+         * The agent's: defaults() to walk, turnInPlace() to turn (motion/README.md "T1 gait", blend). ratePerS 5: at 1
+         * the turn trial fell 20 times in 60 s (turning fast on the walk preset while the share grew), at 5 none;
+         * turnAtSpeed 30: defaults() turned 30 deg/s commanded on the spot without a fall.
+         */
+        public static Blend agent() {
+            return new Blend(balancedWalk(), turnInPlace(), 5.0, 0.05, 10, 0.15, 0.2);
+        }
+
+        /** The largest turn rate (deg/s) allowed at this speed (m/s). */
+        public double allowedTurn(double speed) {
+            double free = Math.max(0, 1 - Math.abs(speed) / fullSpeed);
+            return turnAtSpeed + (Math.max(walk.maxTurn(), turn.maxTurn()) - turnAtSpeed) * free;
+        }
+
+        public Blend withRate(double r) { return new Blend(walk, turn, r, stepOnSpot, turnAtSpeed, fullSpeed, decel); }
+        public Blend withWalk(T1GaitConfig w) { return new Blend(w, turn, ratePerS, stepOnSpot, turnAtSpeed, fullSpeed, decel); }
+        public Blend withTurn(T1GaitConfig t) { return new Blend(walk, t, ratePerS, stepOnSpot, turnAtSpeed, fullSpeed, decel); }
+        public Blend withTurnAtSpeed(double deg, double speed) { return new Blend(walk, turn, ratePerS, stepOnSpot, deg, speed, decel); }
+        public Blend withDecel(double d) { return new Blend(walk, turn, ratePerS, stepOnSpot, turnAtSpeed, fullSpeed, d); }
+    }
+
+    /**
+     * {@link #balanced()} with a longer stride: it walks 0.502 m/s at 0.6 commanded, stride 1.2 x the command 0.602
+     * and 1.25 x 0.627 m/s, no fall in 60 s (bench t1 --preset balanced --set strideScale=1.25, 2026-12-08). The
+     * blend's walk preset: it is steadier than {@link #defaults()} after a switch from turning (defaults() fell 5-9
+     * times in the 60 s walkturn trial) and near {@link #turnInPlace()}, which was searched from it.
+     */
+    public static T1GaitConfig balancedWalk() {
+        return balanced().with("strideScale", 1.25);
     }
 
     /** A copy with a named field changed (for the bench's --set name=value). */
