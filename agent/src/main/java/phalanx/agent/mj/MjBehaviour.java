@@ -76,9 +76,6 @@ final class MjBehaviour {
      */
     static final double HALF_S = 300;
 
-    /** How fast the blended T1 gait slows down, m/s/s (T1GaitConfig.Blend.agent(): faster fell after walking). */
-    static final double BRAKE_MPS2 = phalanx.motion.t1.T1GaitConfig.Blend.agent().decel();
-
     private final MjField field;
     private final StretchedFormation formation;
     private final Role role;
@@ -269,9 +266,7 @@ final class MjBehaviour {
         // on the spot the gait turns about half the command (motion/README.md "T1 gait"), and slows its turn over a
         // second: twice the bearing, not the full rate, so that it does not turn far past it
         if (Math.abs(bearing) > c.turnFirstDeg()) return new Intent(null, 0, 0, Math.max(-c.maxTurn(), Math.min(c.maxTurn(), 2 * bearing)));
-        // the gait slows down at only BRAKE_MPS2: slow down in time to be at fineSpeed by approachM
-        double brake = Math.sqrt(c.fineSpeed() * c.fineSpeed() + 2 * BRAKE_MPS2 * Math.max(0, dist - c.approachM()));
-        return new Intent(null, Math.min(c.maxForward(), Math.min(dist, brake)), 0, turn);
+        return new Intent(null, Math.min(c.maxForward(), dist), 0, turn);
     }
 
     private Intent turnInPlace(Pose2 self, double bearing) {
