@@ -55,10 +55,9 @@ final class MjBehaviour {
     record Config(double maxForward, double maxTurn, double turnFirstDeg, double arriveM, double beamToleranceM,
                   double beamRepeatS, double kickBallX, double kickBallY, double kickDirectionDeg, double kickBackoffM,
                   double kickToleranceM, double kickAimDeg, double approachM, double fineSpeed) {
-        // motion/README.md "T1 gait", the blended gait: 0.6 m/s commanded walks 0.63 m/s, 120 °/s commanded turns
-        // 63 °/s on the spot (the gait holds turns within 10 °/s above 0.15 m/s), no fall; the kick's figures:
-        // motion/README.md "T1 kick"
-        static final Config DEFAULT = new Config(0.6, 120, 35, 0.4, 0.1, 1.0,
+        // motion/README.md "T1 gait", the balanced preset: 0.5 m/s walking and 60 °/s commanded (38 °/s turned)
+        // with no fall; the kick's figures: motion/README.md "T1 kick"
+        static final Config DEFAULT = new Config(0.5, 60, 35, 0.4, 0.1, 1.0,
                 T1KickConfig.defaults().ballX(), T1KickConfig.defaults().ballY(), T1KickConfig.defaults().directionDeg(),
                 0.0, 0.05, 20, 0.6, 0.2);  // kickBackoffM: 0.06 and 0.03 tried in MjKickTest, worse (motion/README.md "T1 kick")
     }
@@ -263,13 +262,11 @@ final class MjBehaviour {
         }
         double bearing = rel.angleDeg();
         double turn = Math.max(-c.maxTurn(), Math.min(c.maxTurn(), bearing));
-        // on the spot the gait turns about half the command (motion/README.md "T1 gait"), and slows its turn over a
-        // second: twice the bearing, not the full rate, so that it does not turn far past it
-        if (Math.abs(bearing) > c.turnFirstDeg()) return new Intent(null, 0, 0, Math.max(-c.maxTurn(), Math.min(c.maxTurn(), 2 * bearing)));
+        if (Math.abs(bearing) > c.turnFirstDeg()) return new Intent(null, 0, 0, turn);
         return new Intent(null, Math.min(c.maxForward(), dist), 0, turn);
     }
 
     private Intent turnInPlace(Pose2 self, double bearing) {
-        return new Intent(null, 0, 0, Math.max(-c.maxTurn(), Math.min(c.maxTurn(), 2 * bearing)));
+        return new Intent(null, 0, 0, Math.signum(bearing) * c.maxTurn());
     }
 }

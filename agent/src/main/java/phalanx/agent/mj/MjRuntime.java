@@ -35,12 +35,8 @@ public final class MjRuntime {
     private final MjPerceptionParser parser = new MjPerceptionParser();
     private final MjWorld world;
     private final MjBehaviour behaviour;
-    /**
-     * The blend of a walk and a turn preset by the command (T1GaitConfig.Blend.agent(): 0.63 m/s walking, 63 °/s
-     * turning at 120 commanded, no fall switching every 5 s; motion/README.md "T1 gait"); standing (and so the kick's
-     * and the get-up's hand-over) in balanced()'s pose, as before.
-     */
-    private final T1Gait gait = new T1Gait(T1GaitConfig.Blend.agent(), T1GaitConfig.balanced());
+    /** balanced(): 0.50 m/s and 38 °/s (60 commanded) with no fall, where defaults() walks 0.6 but falls turning (motion/README.md). */
+    private final T1Gait gait = new T1Gait(T1GaitConfig.balanced());
     private final T1Kick kick = new T1Kick(T1GaitConfig.balanced(), T1KickConfig.defaults());
     /** A kick asked for and waiting for the gait's feet to come together, since (game time), or null. */
     private MjBehaviour.Foot pendingKick;
