@@ -45,6 +45,32 @@ class KickSearchScriptTest {
     }
 
     @Test
+    void aBoundOnTheWholeLengthScalesEveryPhaseDownToFit(@TempDir Path tmp) throws Exception {
+        Run params = run(Map.of(), "scripts/lib/tools/kick-search", "params", "motions/strong_kick.xml");
+        assertEquals(0, params.status(), params.err());
+        Path json = tmp.resolve("p.json");
+        Files.writeString(json, params.out());
+        Run gen = run(Map.of("KICK_MAX_MS", "900"), "scripts/lib/tools/kick-search", "gen", json.toString(), "bounded");
+        assertEquals(0, gen.status(), gen.err());
+        Files.writeString(tmp.resolve("strong_kick.xml"), gen.out());
+        PhaseMotion bounded = (PhaseMotion) MotionLibrary.load(tmp).get("strong_kick");
+        PhaseMotion committed = (PhaseMotion) MotionLibrary.load(MotionFilesTest.DIR).get("strong_kick");
+        int total = 0, committedTotal = 0;
+        for (int i = 0; i < bounded.phases().size(); i++) {
+            int d = bounded.phase(i).durationMs(), c = committed.phase(i).durationMs();
+            assertTrue(d >= 20 && d <= c, bounded.phase(i).name() + ": " + d + " ms against " + c);
+            assertEquals(committed.phase(i).targets(), bounded.phase(i).targets(), "only the durations change");
+            total += d;
+            committedTotal += c;
+        }
+        assertTrue(committedTotal > 900, "the committed kick is longer than the bound: " + committedTotal);
+        assertTrue(total <= 900 && total >= 850, "total " + total + " ms");
+        Run low = run(Map.of("KICK_MAX_MS", "100"), "scripts/lib/tools/kick-search", "gen", json.toString());
+        assertEquals(1, low.status());
+        assertTrue(low.err().contains("KICK_MAX_MS 100 is below 200 ms"), low.err());
+    }
+
+    @Test
     void refusesAScoreSettingThatIsNoNumber() throws Exception {
         Run r = run(Map.of("KICK_REEVAL", "often"), "scripts/lib/tools/kick-search", "params", "motions/strong_kick.xml");
         assertEquals(1, r.status());
