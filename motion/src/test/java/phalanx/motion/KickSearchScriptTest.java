@@ -13,7 +13,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 /**
  * scripts/phalanx bench kick-search (scripts/lib/tools/kick-search) without a server: the committed
- * strong kicks are generator 3's output for the parameters `params` reads back from them (so a search
+ * strong kicks and the quick kick are generator 3's output for the parameters `params` reads back from them (so a search
  * can restart from a committed file), and a bad score setting in the environment is refused by name.
  * Needs python3; skips with a message without it.
  */
@@ -23,8 +23,9 @@ class KickSearchScriptTest {
     }
 
     @Test
-    void theCommittedStrongKicksAreGeneratedFromTheirOwnParameters(@TempDir Path tmp) throws Exception {
-        for (String file : new String[] {"strong_kick.xml", "type4/strong_kick.xml"}) {
+    void theCommittedGenerator3KicksAreGeneratedFromTheirOwnParameters(@TempDir Path tmp) throws Exception {
+        for (String file : new String[] {"strong_kick.xml", "type4/strong_kick.xml", "quick_kick.xml"}) {
+            String name = Path.of(file).getFileName().toString().replace(".xml", "");
             Run params = run(Map.of(), "scripts/lib/tools/kick-search", "params", "motions/" + file);
             assertEquals(0, params.status(), params.err());
             Path json = tmp.resolve("p.json");
@@ -32,9 +33,9 @@ class KickSearchScriptTest {
             Run gen = run(Map.of(), "scripts/lib/tools/kick-search", "gen", json.toString(), "regenerated");
             assertEquals(0, gen.status(), gen.err());
             Path dir = Files.createDirectories(tmp.resolve(file.replace('/', '_')));
-            Files.writeString(dir.resolve("strong_kick.xml"), gen.out());
-            PhaseMotion mine = (PhaseMotion) MotionLibrary.load(dir).get("strong_kick");
-            PhaseMotion committed = (PhaseMotion) MotionLibrary.load(MotionFilesTest.DIR.resolve(file).getParent()).get("strong_kick");
+            Files.writeString(dir.resolve(name + ".xml"), gen.out());
+            PhaseMotion mine = (PhaseMotion) MotionLibrary.load(dir).get(name);
+            PhaseMotion committed = (PhaseMotion) MotionLibrary.load(MotionFilesTest.DIR.resolve(file).getParent()).get(name);
             assertEquals(committed.phases().size(), mine.phases().size(), file);
             for (int i = 0; i < mine.phases().size(); i++) {
                 assertEquals(committed.phase(i).name(), mine.phase(i).name(), file);
