@@ -20,7 +20,7 @@ class MotionFilesTest {
         assertTrue(Files.isDirectory(DIR), "run from the project root: " + DIR.toAbsolutePath());
         MotionLibrary lib = MotionLibrary.load(DIR);
         for (String name : List.of("walk_forward", "side_step_left", "side_step_right", "turn_left", "turn_right",
-                "kick", "strong_kick", "kick_left", "strong_kick_left", "stand_up_front", "stand_up_back", "dive_left", "dive_right")) {
+                "kick", "strong_kick", "kick_left", "strong_kick_left", "quick_kick", "quick_kick_left", "stand_up_front", "stand_up_back", "dive_left", "dive_right")) {
             assertNotNull(lib.get(name), "motions/ lacks " + name);
         }
         assertInstanceOf(TextMotion.class, lib.get("turn_left"), "turns are Webots text motions (4.5.3)");
@@ -45,7 +45,7 @@ class MotionFilesTest {
     }
 
     private static void assertMirrored(MotionLibrary lib) {
-        for (String[] pair : new String[][] {{"kick", "kick_left"}, {"strong_kick", "strong_kick_left"}, {"dive_left", "dive_right"}}) {
+        for (String[] pair : new String[][] {{"kick", "kick_left"}, {"strong_kick", "strong_kick_left"}, {"quick_kick", "quick_kick_left"}, {"dive_left", "dive_right"}}) {
             PhaseMotion a = (PhaseMotion) lib.get(pair[0]), b = (PhaseMotion) lib.get(pair[1]);
             String what = b.source() + " mirrors " + a.source();
             assertEquals(a.phases().size(), b.phases().size(), what);
