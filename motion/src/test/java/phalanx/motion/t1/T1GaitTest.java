@@ -48,7 +48,7 @@ class T1GaitTest {
         return m;
     }
 
-    private static void assertInRange(List<JointCommand> cmds, String when) {
+    static void assertInRange(List<JointCommand> cmds, String when) {
         assertEquals(23, cmds.size(), "all 23 T1 actuators");
         for (JointCommand c : cmds) {
             double[] r = RANGE_RAD.get(c.actuator());
