@@ -192,9 +192,7 @@ public final class T1Bench {
             cycle(joints(gait.next(speed, 0, turnDegS)));
             time += 0.02;
             double yw = yaw(p.quat());
-            double dy = yw - lastYaw;
-            while (dy > Math.PI) dy -= 2 * Math.PI;
-            while (dy < -Math.PI) dy += 2 * Math.PI;
+            double dy = yawStep(lastYaw, yw);
             segYaw += dy;
             lastYaw = yw;
             if (verbose && i % TRACE_EVERY == 0) trace(trial, time);
@@ -241,9 +239,7 @@ public final class T1Bench {
             boolean walking = (i / perPhase) % 2 == 0;
             feed(gait);
             cycle(joints(walking ? gait.next(speed, 0, 0) : gait.next(0, 0, turnDegS)));
-            double yw = yaw(p.quat()), dyaw = yw - lastYaw;
-            while (dyaw > Math.PI) dyaw -= 2 * Math.PI;
-            while (dyaw < -Math.PI) dyaw += 2 * Math.PI;
+            double yw = yaw(p.quat()), dyaw = yawStep(lastYaw, yw);
             double h = lastYaw + dyaw / 2;
             if (walking) {
                 walked += Math.cos(h) * (p.pos()[0] - last[0]) + Math.sin(h) * (p.pos()[1] - last[1]);
@@ -268,6 +264,21 @@ public final class T1Bench {
         // commanded turn in `lateral`, measured turn rate in `yawDeg`
         return new Result("walkturn", seconds, falls, speed, walked / Math.max(walkTime, 1e-9), turnDegS,
                 Math.toDegrees(turned) / Math.max(turnTime, 1e-9));
+    }
+
+    /** The yaw change from {@code from} to {@code to} (rad), the short way round. */
+    static double yawStep(double from, double to) {
+        double d = to - from;
+        while (d > Math.PI) d -= 2 * Math.PI;
+        while (d < -Math.PI) d += 2 * Math.PI;
+        return d;
+    }
+
+    /** {@code FIELD=VALUE} of an option, or a message naming the option. */
+    static String[] fieldValue(String option, String arg) {
+        String[] kv = arg.split("=", 2);
+        if (kv.length != 2 || kv[0].isEmpty()) throw new IllegalArgumentException(option + " FIELD=VALUE, got '" + arg + "'");
+        return kv;
     }
 
     /** One kick of the kick trial: the ball's travel (m), its direction against the robot's heading (deg), a fall. */
@@ -507,7 +518,7 @@ public final class T1Bench {
                 };
                 case "--walk-set", "--turn-set" -> {
                     if (blend == null) throw new IllegalArgumentException(args[i] + " after --preset blend");
-                    String[] kv = args[i + 1].split("=", 2);
+                    String[] kv = fieldValue(args[i], args[i + 1]);
                     double v = Double.parseDouble(kv[1]);
                     blend = args[i].equals("--walk-set") ? blend.withWalk(blend.walk().with(kv[0], v)) : blend.withTurn(blend.turn().with(kv[0], v));
                     i++;
@@ -519,13 +530,17 @@ public final class T1Bench {
                 case "--turn-at-speed" -> {
                     if (blend == null) throw new IllegalArgumentException("--turn-at-speed after --preset blend");
                     String[] v = args[++i].split(",");
+                    if (v.length != 2) throw new IllegalArgumentException("--turn-at-speed DEG_S,M_S, got '" + args[i] + "'");
                     blend = blend.withTurnAtSpeed(Double.parseDouble(v[0]), Double.parseDouble(v[1]));
                 }
                 case "--decel" -> {
                     if (blend == null) throw new IllegalArgumentException("--decel after --preset blend");
                     blend = blend.withDecel(Double.parseDouble(args[++i]));
                 }
-                case "--phase" -> phase = Double.parseDouble(args[++i]);
+                case "--phase" -> {
+                    phase = Double.parseDouble(args[++i]);
+                    if (!(phase >= 0.02)) throw new IllegalArgumentException("--phase S must be at least one cycle (0.02 s), got " + args[i]);
+                }
                 case "--set" -> {
                     String[] kv = args[++i].split("=", 2);
                     config = config.with(kv[0], Double.parseDouble(kv[1]));
@@ -560,8 +575,8 @@ public final class T1Bench {
                             Starts its own rcssservermj (ports P, P+1; default 4100) and runs the T1 gait's trials:
                             stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.
                             --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.
-                            --preset blend: the agent's gait, T1GaitConfig.Blend.agent() (defaults() walking, turnInPlace()
-                            turning, blended by the command; balanced() standing): --walk-set/--turn-set change its
+                            --preset blend: T1GaitConfig.Blend.agent() (balancedWalk() walking, turnInPlace() turning, blended
+                            by the command; balanced() standing; the agent itself walks balanced()): --walk-set/--turn-set change its
                             presets, --blend-rate its rate (share per s), --turn-at-speed its turn limit at and above a speed, --decel its slowing down,
                             --set its stand config.
                             walkturn (not in all): --phase S (5) walking at --speed, --phase S turning at --turn, in turn,

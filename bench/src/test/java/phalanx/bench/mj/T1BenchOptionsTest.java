@@ -4,7 +4,7 @@ import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-/** The T1 bench's get-up options, refused before any server starts; its reading of how a robot lies. */
+/** The T1 bench's options, bad ones refused before any server starts; its reading of how a robot lies; its yaw steps. */
 class T1BenchOptionsTest {
     @Test
     void aBadLyingOrSeedIsRefusedWithWhatIsAllowed() {
@@ -12,6 +12,28 @@ class T1BenchOptionsTest {
                 () -> T1Bench.main(new String[]{"--trial", "getup", "--lying", "front,sideways"}));
         assertTrue(lying.getMessage().contains("--lying front|back|both|fall-front|fall-back"), lying.getMessage());
         assertThrows(NumberFormatException.class, () -> T1Bench.main(new String[]{"--trial", "getup", "--seed", "x"}));
+    }
+
+    @Test
+    void badBlendOptionsAreRefusedWithWhatIsExpected() {
+        IllegalArgumentException before = assertThrows(IllegalArgumentException.class, () -> T1Bench.main(new String[]{"--walk-set", "sway=0.1"}));
+        assertTrue(before.getMessage().contains("after --preset blend"), before.getMessage());
+        IllegalArgumentException noValue = assertThrows(IllegalArgumentException.class,
+                () -> T1Bench.main(new String[]{"--preset", "blend", "--turn-set", "sway"}));
+        assertTrue(noValue.getMessage().contains("--turn-set FIELD=VALUE, got 'sway'"), noValue.getMessage());
+        IllegalArgumentException pair = assertThrows(IllegalArgumentException.class,
+                () -> T1Bench.main(new String[]{"--preset", "blend", "--turn-at-speed", "10"}));
+        assertTrue(pair.getMessage().contains("--turn-at-speed DEG_S,M_S"), pair.getMessage());
+        IllegalArgumentException phase = assertThrows(IllegalArgumentException.class,
+                () -> T1Bench.main(new String[]{"--trial", "walkturn", "--phase", "0"}));
+        assertTrue(phase.getMessage().contains("--phase S must be at least one cycle"), phase.getMessage());
+    }
+
+    @Test
+    void aYawStepGoesTheShortWayRound() {
+        assertEquals(Math.toRadians(20), T1Bench.yawStep(Math.toRadians(170), Math.toRadians(-170)), 1e-12);
+        assertEquals(Math.toRadians(-20), T1Bench.yawStep(Math.toRadians(-170), Math.toRadians(170)), 1e-12);
+        assertEquals(0.1, T1Bench.yawStep(0.2, 0.3), 1e-12);
     }
 
     @Test
