@@ -34,22 +34,30 @@ public final class ApproachBench {
     static final double FIELD_X = 15, FIELD_Y = 10, GOAL_HALF_WIDTH = 1.05;
 
     record Options(int unum, int type, int trials, double minM, double maxM, long seed, String playerOpts, Path dir,
-                   int port, double noTouchS, double afterTouchS, double goalClearance, double bearingDeg) {}
+                   int port, double noTouchS, double afterTouchS, double goalClearance, double bearingDeg,
+                   double attackMinM, double attackMaxM) {
+        /** The attack trial: the robot is moved A..B m from the opponent goal before each ball (NaN: off). */
+        boolean attack() { return !Double.isNaN(attackMinM); }
+    }
 
     static final String USAGE = """
             usage: scripts/phalanx bench approach [--trials N] [--type T] [--unum U] [--min M] [--max M] [--seed S]
                                                  [--player-opts "FLAGS"] [--dir DIR] [--port P] [--no-touch S]
                                                  [--after-touch S] [--goal-clearance M] [--bearing DEG]
+                                                 [--attack A,B]
               starts its own rcssserver3d (agent port P, default the first free pair from 3700; monitor P+100)
               and one player (scripts/start.sh --only U, type T) and runs N trials (default 30): a still ball
               M_min..M_max m (default 1..3) from the robot, within DEG (default 50) of its heading: in view,
               as the ball is for the player the coordinator sends to it; a trial ends 1 s after the ball stopped, S s (default
-              30) with no touch, or S s (default 12) after the first touch.""";
+              30) with no touch, or S s (default 12) after the first touch.
+              --attack A,B: before each ball the robot is moved A..B m from the opponent goal's centre (within 40 deg of
+              the field's axis), facing the goal within DEG/2, and the ball put M_min..M_max m ahead of it; a goal
+              ends the trial (give --after-touch room to walk the ball in, e.g. 25). The goal-clearance is not applied.""";
 
     /** Parses the flags; a bad one throws IllegalArgumentException naming it. */
     static Options parse(String... args) {
         int unum = 9, type = 0, trials = 30, port = 0;
-        double min = 1, max = 3, noTouch = 30, afterTouch = 12, clearance = 9, bearing = 50;
+        double min = 1, max = 3, noTouch = 30, afterTouch = 12, clearance = 9, bearing = 50, attackMin = Double.NaN, attackMax = Double.NaN;
         long seed = 1;
         String opts = "";
         Path dir = null;
@@ -71,6 +79,12 @@ public final class ApproachBench {
                     case "--after-touch" -> afterTouch = Double.parseDouble(v);
                     case "--goal-clearance" -> clearance = Double.parseDouble(v);
                     case "--bearing" -> bearing = Double.parseDouble(v);
+                    case "--attack" -> {
+                        String[] ab = v.split(",", -1);
+                        if (ab.length != 2) throw new IllegalArgumentException("--attack takes A,B (metres from the opponent goal), got '" + v + "'");
+                        attackMin = Double.parseDouble(ab[0]);
+                        attackMax = Double.parseDouble(ab[1]);
+                    }
                     case "--player-opts" -> opts = v;
                     case "--dir" -> dir = Path.of(v);
                     default -> throw new IllegalArgumentException("unknown option " + a);
@@ -88,8 +102,10 @@ public final class ApproachBench {
         if (!(noTouch > 0 && afterTouch > 0)) throw new IllegalArgumentException("--no-touch and --after-touch must be positive");
         if (!(clearance >= 0 && clearance <= 20)) throw new IllegalArgumentException("--goal-clearance must be 0-20 m, got " + clearance);
         if (!(bearing >= 0 && bearing <= 180)) throw new IllegalArgumentException("--bearing must be 0-180 degrees, got " + bearing);
+        if (!Double.isNaN(attackMin) && !(attackMin >= 2 && attackMax >= attackMin && attackMax <= 20))
+            throw new IllegalArgumentException("--attack A,B must satisfy 2 <= A <= B <= 20 m, got " + attackMin + "," + attackMax);
         if (opts.matches(".*['\"\\\\$`;|&<>].*")) throw new IllegalArgumentException("--player-opts takes plain flags, got '" + opts + "'");
-        return new Options(unum, type, trials, min, max, seed, opts, dir, port, noTouch, afterTouch, clearance, bearing);
+        return new Options(unum, type, trials, min, max, seed, opts, dir, port, noTouch, afterTouch, clearance, bearing, attackMin, attackMax);
     }
 
     /**
@@ -198,15 +214,27 @@ public final class ApproachBench {
             double h = Math.toRadians(p.yawDeg() + b);
             double x = p.x() + d * Math.cos(h), y = p.y() + d * Math.sin(h);
             if (Math.abs(x) > FIELD_X - 3 || Math.abs(y) > FIELD_Y - 2) continue;
-            if (Math.hypot(FIELD_X - x, y) < o.goalClearance()) continue;
+            if (!o.attack() && Math.hypot(FIELD_X - x, y) < o.goalClearance()) continue;
             return new double[]{x, y, d, b};
         }
         return null;
     }
 
+    /** The attack trial's start: the robot A..B m from the opponent goal, facing it; the falls of the 3 s after the move. */
+    private int moveToAttack() throws IOException {
+        double r = o.attackMinM() + rnd.nextDouble() * (o.attackMaxM() - o.attackMinM());
+        double phi = Math.toRadians(40 * (2 * rnd.nextDouble() - 1));
+        double x = FIELD_X - r * Math.cos(phi), y = r * Math.sin(phi);
+        double h = Math.toDegrees(Math.atan2(-y, FIELD_X - x)) + o.bearingDeg() / 2 * (2 * rnd.nextDouble() - 1);
+        // the move's angle 0 faces +y (recordings README)
+        mon.send(String.format(Locale.ROOT, "(agent (unum %d) (team Left) (move %.3f %.3f %.3f %.1f))", o.unum(), x, y, standingZ, h - 90));
+        return pass(3);
+    }
+
     private Trial trial(int n) throws IOException {
         int falls = 0, movedFalls = 0;
         if (torso() == null) throw new IOException("player " + o.unum() + " is no longer on the field (its process died? see its log)");
+        if (o.attack()) movedFalls = moveToAttack();
         double[] s = spot(torso());
         if (s == null) {
             double x = -6 + 4 * rnd.nextDouble(), y = -3 + 6 * rnd.nextDouble(), h = -180 + 360 * rnd.nextDouble();

@@ -72,10 +72,14 @@ class ApproachBenchTest {
         assertEquals(9, ApproachBench.parse().unum());
         assertEquals(List.of(2, 20), List.of(ApproachBench.parse("--unum", "2", "--trials", "20").unum(), ApproachBench.parse("--trials", "20").trials()));
         for (String[] bad : new String[][]{{"--unum", "1"}, {"--trials", "x"}, {"--min", "3", "--max", "2"}, {"--max", "6"}, {"--bogus", "1"},
-                {"--player-opts", "--x 1; rm -rf /"}, {"--trials"}, {"--bearing", "200"}}) {
+                {"--player-opts", "--x 1; rm -rf /"}, {"--trials"}, {"--bearing", "200"}, {"--attack", "8"}, {"--attack", "9,6"},
+                {"--attack", "1,6"}, {"--attack", "6,x"}}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> ApproachBench.parse(bad), String.join(" ", bad));
             assertTrue(e.getMessage().contains(bad[0]) || e.getMessage().contains("--min"), e.getMessage());
         }
+        assertFalse(ApproachBench.parse().attack());
+        ApproachBench.Options a = ApproachBench.parse("--attack", "6,11");
+        assertEquals(List.of(6.0, 11.0, true), List.of(a.attackMinM(), a.attackMaxM(), a.attack()));
         assertEquals(-170, ApproachBench.angleDiff(10, 180), 1e-9);
         assertEquals(180, ApproachBench.angleDiff(-90, 90), 1e-9);
     }
