@@ -2,7 +2,7 @@ package phalanx.bench.approach;
 
 /**
  * One approach trial read off the monitor's pictures of the ball (ground truth): the ball is set still at
- * {@code start}; the trial ends {@link #SETTLE_S} after the ball was last seen moving once it has been
+ * {@code start}; the trial ends {@code settleS} (a kick: {@link #SETTLE_S}) after the ball was last seen moving once it has been
  * touched (moved more than {@link #TOUCH_M} from where it lay), or when nothing touched it within
  * {@code noTouchS}, or {@code afterTouchS} after the first touch (a dribble goes on and on).
  */
@@ -16,10 +16,18 @@ final class BallWatch {
 
     enum End { RUNNING, SETTLED, NO_TOUCH, TIME_UP }
 
-    private final double x0, y0, t0, noTouchS, afterTouchS;
+    /** The attack trial's settle time: a dribble leaves the ball still for a second or two between its pushes. */
+    static final double DRIBBLE_SETTLE_S = 4.0;
+
+    private final double x0, y0, t0, noTouchS, afterTouchS, settleS;
     private double touchedAt = Double.NaN, lastMoving = Double.NaN, px, py, x, y;
 
     BallWatch(double t0, double x0, double y0, double noTouchS, double afterTouchS) {
+        this(t0, x0, y0, noTouchS, afterTouchS, SETTLE_S);
+    }
+
+    BallWatch(double t0, double x0, double y0, double noTouchS, double afterTouchS, double settleS) {
+        this.settleS = settleS;
         this.t0 = t0;
         this.x0 = x0;
         this.y0 = y0;
@@ -40,7 +48,7 @@ final class BallWatch {
             else return t - t0 > noTouchS ? End.NO_TOUCH : End.RUNNING;
         }
         if (Math.hypot(x - px, y - py) > MOVING_M) lastMoving = t;
-        if (t - lastMoving >= SETTLE_S) return End.SETTLED;
+        if (t - lastMoving >= settleS) return End.SETTLED;
         return t - touchedAt > afterTouchS ? End.TIME_UP : End.RUNNING;
     }
 

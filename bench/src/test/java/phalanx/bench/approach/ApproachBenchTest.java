@@ -53,6 +53,23 @@ class ApproachBenchTest {
     }
 
     @Test
+    void aDribblesPausesEndAKickTrialButNotAnAttackTrial() {
+        // touched at 1 s, then pushed 0.3 m every 2.5 s: still for about 2.4 s between pushes
+        BallWatch kick = new BallWatch(0, 0, 0, 30, 30), attack = new BallWatch(0, 0, 0, 30, 30, BallWatch.DRIBBLE_SETTLE_S);
+        BallWatch.End k = BallWatch.End.RUNNING, a = BallWatch.End.RUNNING;
+        double t = 0, endK = Double.NaN;
+        while (a == BallWatch.End.RUNNING && t < 60) {
+            t += 0.04;
+            double x = t < 1 ? 0 : 0.3 * (1 + Math.floor((t - 1) / 2.5));
+            if (k == BallWatch.End.RUNNING && (k = kick.see(t, x, 0)) != BallWatch.End.RUNNING) endK = t;
+            a = attack.see(t, x, 0);
+        }
+        assertEquals(BallWatch.End.SETTLED, k);
+        assertEquals(2.0, endK, 0.1, "the kick watch ends 1 s after the first push");
+        assertEquals(BallWatch.End.TIME_UP, a, "the attack watch follows the dribble to the touch limit");
+    }
+
+    @Test
     void theSummaryTakesMediansOverTouchedTrialsAndCountsLongKicksGoalsAndFallsApartFromTheBenchsMoves() {
         List<ApproachBench.Trial> trials = List.of(
                 new ApproachBench.Trial(1, 2, 0, "stopped", 4, 7.0, 10, 0, 1),
