@@ -227,9 +227,12 @@ public final class ApproachBench {
         double phi = Math.toRadians(40 * (2 * rnd.nextDouble() - 1));
         double x = FIELD_X - r * Math.cos(phi), y = r * Math.sin(phi);
         double h = Math.toDegrees(Math.atan2(-y, FIELD_X - x)) + o.bearingDeg() / 2 * (2 * rnd.nextDouble() - 1);
+        // After a goal the server's kick-off lets the player beam to its formation spot, which it does: play on first.
+        mon.send("(playMode PlayOn)");
+        int falls = pass(0.5);
         // the move's angle 0 faces +y (recordings README)
         mon.send(String.format(Locale.ROOT, "(agent (unum %d) (team Left) (move %.3f %.3f %.3f %.1f))", o.unum(), x, y, standingZ, h - 90));
-        return pass(3);
+        return falls + pass(3);
     }
 
     private Trial trial(int n) throws IOException {
