@@ -36,7 +36,11 @@ public final class TeamChannel {
     /** The teammates' ball reports heard in the last step (issue 19). */
     private final List<HeardBall> heardBalls = new ArrayList<>();
     private final List<TeamMessage.Report> heardReports = new ArrayList<>();
-    private long rounds, reportsInRounds, actionsDispatched, actionsReceived;
+    /** Rounds and the reports they heard as one value: another thread (a test, a status line) reads both at once. */
+    public record RoundCount(long rounds, long reports) {}
+
+    private volatile RoundCount roundCount = new RoundCount(0, 0);
+    private long actionsDispatched, actionsReceived;
     private int lastRoundHeard;
 
     /** A teammate's ball, in the own frame, said at server time {@code time}. */
@@ -91,8 +95,7 @@ public final class TeamChannel {
             if (e instanceof ChannelEvent.ReportsComplete r) {
                 lastRoundHeard = r.heard();   // counted once its actions are out: a play-mode change may drop the round
             } else if (e instanceof ChannelEvent.ActionsDispatched d) {
-                rounds++;
-                reportsInRounds += lastRoundHeard;
+                roundCount = new RoundCount(roundCount.rounds() + 1, roundCount.reports() + lastRoundHeard);
                 actionsDispatched += d.actions();
             } else if (e instanceof ChannelEvent.ActionReceived) {
                 actionsReceived++;
@@ -116,8 +119,9 @@ public final class TeamChannel {
     public List<TeamMessage.Report> heardReports() { return heardReports; }
 
     /** On the coordinator: rounds whose actions were all said, the reports those rounds heard, the actions sent. */
-    public long rounds() { return rounds; }
-    public long reportsInRounds() { return reportsInRounds; }
+    public long rounds() { return roundCount.rounds(); }
+    public long reportsInRounds() { return roundCount.reports(); }
+    public RoundCount roundCount() { return roundCount; }
     public long actionsDispatched() { return actionsDispatched; }
 
     /** On a field player: the orders addressed to it that it heard. */

@@ -44,7 +44,8 @@ class MjTeamTest {
             }
             TeamChannel keeper = team.get(0).channel();
             List<MjRuntime> fieldPlayers = team.subList(1, field.players());
-            long roundsBefore = keeper.rounds(), reportsBefore = keeper.reportsInRounds();
+            TeamChannel.RoundCount countBefore = keeper.roundCount();   // one read: the keeper's thread counts on
+            long roundsBefore = countBefore.rounds(), reportsBefore = countBefore.reports();
             long[] ordersBefore = fieldPlayers.stream().mapToLong(r -> r.channel().actionsReceived()).toArray();
             MjRuntime first = team.get(field.players() - 1);
             long start = first.cycles();
@@ -67,7 +68,8 @@ class MjTeamTest {
             double after = closest;
             assertTrue(before - after > 0.5, "player " + striker.unum() + " walked toward the ball: " + before + " m -> " + after + " m");
 
-            long rounds = keeper.rounds() - roundsBefore, reports = keeper.reportsInRounds() - reportsBefore;
+            TeamChannel.RoundCount count = keeper.roundCount();
+            long rounds = count.rounds() - roundsBefore, reports = count.reports() - reportsBefore;
             long cycles = first.cycles() - start;
             // a round is 6 report cycles, at most 6 action frames and a 20-cycle pause: about 0.7 s
             assertTrue(rounds >= cycles / 50, rounds + " coordination rounds in " + cycles + " cycles of play");
