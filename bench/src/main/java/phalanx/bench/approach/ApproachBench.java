@@ -52,8 +52,8 @@ public final class ApproachBench {
               30) with no touch, or S s (default 12) after the first touch.
               --attack A,B: before each ball the robot is moved A..B m from the opponent goal's centre (within 40 deg of
               the field's axis), facing the goal within DEG/2, and the ball put M_min..M_max m ahead of it; a goal
-              ends the trial (give --after-touch room to walk the ball in, e.g. 25), and so does a ball still for 4 s (a
-              dribble's pauses are shorter). The goal-clearance is not applied.""";
+              ends the trial, else the ball out or the touch limit (give --after-touch room to walk the ball in, e.g. 25),
+              not a still ball. The goal-clearance is not applied.""";
 
     /** Parses the flags; a bad one throws IllegalArgumentException naming it. */
     static Options parse(String... args) {
@@ -254,7 +254,7 @@ public final class ApproachBench {
         double putAt = scene.time();
         do next(); while (Math.hypot(scene.ball()[0] - s[0], scene.ball()[1] - s[1]) > 0.02 && scene.time() - putAt < 2);
         BallWatch w = new BallWatch(scene.time(), s[0], s[1], o.noTouchS(), o.afterTouchS(),
-                o.attack() ? BallWatch.DRIBBLE_SETTLE_S : BallWatch.SETTLE_S);
+                o.attack() ? BallWatch.ATTACK_SETTLE_S : BallWatch.SETTLE_S);
         boolean down = fallen();
         String end;
         while (true) {

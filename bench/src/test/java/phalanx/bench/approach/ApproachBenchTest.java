@@ -55,7 +55,7 @@ class ApproachBenchTest {
     @Test
     void aDribblesPausesEndAKickTrialButNotAnAttackTrial() {
         // touched at 1 s, then pushed 0.3 m every 2.5 s: still for about 2.4 s between pushes
-        BallWatch kick = new BallWatch(0, 0, 0, 30, 30), attack = new BallWatch(0, 0, 0, 30, 30, BallWatch.DRIBBLE_SETTLE_S);
+        BallWatch kick = new BallWatch(0, 0, 0, 30, 30), attack = new BallWatch(0, 0, 0, 30, 30, BallWatch.ATTACK_SETTLE_S);
         BallWatch.End k = BallWatch.End.RUNNING, a = BallWatch.End.RUNNING;
         double t = 0, endK = Double.NaN;
         while (a == BallWatch.End.RUNNING && t < 60) {
