@@ -222,14 +222,22 @@ public final class ApproachBench {
     }
 
     /** The attack trial's start: the robot A..B m from the opponent goal, facing it; the falls of the 3 s after the move. */
+    /** SimSpark's RuleGoalPauseTime (naosoccersim.rb), game seconds. */
+    private static final double GOAL_PAUSE_S = 3.0;
+    private boolean afterGoal;
+
     private int moveToAttack() throws IOException {
         double r = o.attackMinM() + rnd.nextDouble() * (o.attackMaxM() - o.attackMinM());
         double phi = Math.toRadians(40 * (2 * rnd.nextDouble() - 1));
         double x = FIELD_X - r * Math.cos(phi), y = r * Math.sin(phi);
         double h = Math.toDegrees(Math.atan2(-y, FIELD_X - x)) + o.bearingDeg() / 2 * (2 * rnd.nextDouble() - 1);
-        // After a goal the server's kick-off lets the player beam to its formation spot, which it does: play on first.
+        // After a goal the server holds Goal_Left for its goal pause (RuleGoalPauseTime, 3 s; a PlayOn sent then does not
+        // hold) and then gives the kick-off, in which the player beams back to its formation spot: wait for that beam,
+        // then play on and move it.
+        int falls = afterGoal ? pass(GOAL_PAUSE_S + 0.5) : 0;
+        afterGoal = false;
         mon.send("(playMode PlayOn)");
-        int falls = pass(0.5);
+        falls += pass(0.5);
         // the move's angle 0 faces +y (recordings README)
         mon.send(String.format(Locale.ROOT, "(agent (unum %d) (team Left) (move %.3f %.3f %.3f %.1f))", o.unum(), x, y, standingZ, h - 90));
         return falls + pass(3);
@@ -279,6 +287,7 @@ public final class ApproachBench {
         }
         double toGoal = Math.toDegrees(Math.atan2(-s[1], FIELD_X - s[0]));
         double err = Double.isNaN(w.directionDeg()) ? Double.NaN : angleDiff(w.directionDeg(), toGoal);
+        afterGoal = end.equals("goal");
         return new Trial(n, s[2], s[3], end, w.timeToTouch(), w.travel(), err, falls, movedFalls);
     }
 
