@@ -94,6 +94,7 @@ public final class OnBall implements Action {
                 case DRIBBLE -> {
                     double toGoal = dribbles(s) ? goalDirection(s) : pressedHeading(s);
                     if (Double.isNaN(toGoal)) { state = State.ALIGN; continue; }
+                    if (snaps(s, ball)) { state = State.KICK; kick.start(s, snapStrong, snapLeft); continue; }
                     dribble.direction(toGoal);
                     return dribble.decide(s);
                 }
@@ -151,6 +152,30 @@ public final class OnBall implements Action {
         double within = shoots(distanceToGoal(s)) ? Facts.goalMouthHalfAngle(s, ball) : k.pressureMaxDeg();
         return Math.abs(Angles.difference(dir, toGoal)) <= within ? dir : Double.NaN;
     }
+
+    /**
+     * A snap shot: dribbling in PlayOn between shootWithin and snapWithin of the opponent goal, the heading on the goal
+     * (the alignment tolerance), the ball still (under SNAP_STILL) and at a kick's spot of either foot, the kick for
+     * that distance (strong beyond strongBeyond); the window reaches SNAP_FAR_X beyond the spot, wider than Prepare
+     * For Kick's, since a dribbler never lines up. Sets the foot and the kick.
+     */
+    private boolean snaps(Situation s, Vector2 ball) {
+        AgentConfig.Kick k = config.kick();
+        double d = distanceToGoal(s);
+        if (k.snapWithin() <= 0 || s.playMode() != PlayMode.PLAY_ON || ball == null || Double.isNaN(d) || d > k.snapWithin() || shoots(d))
+            return false;
+        double e = goalError(s);
+        Vector2 v = Facts.ballVelocity(s);
+        if (Double.isNaN(e) || Math.abs(e) > tolerance(s) || v == null || v.norm() > SNAP_STILL) return false;
+        snapStrong = strong(s);
+        snapLeft = ball.y() > 0;
+        double ex = ball.x() - k.spotX(snapStrong), ey = ball.y() - k.spotY(snapStrong, snapLeft);
+        return ex >= -k.toleranceX() && ex <= SNAP_FAR_X && Math.abs(ey) <= SNAP_Y;
+    }
+
+    /** A snap shot's ball: slower than this (m/s), up to this far beyond the kick's spot and this far to its side (m). */
+    private static final double SNAP_STILL = 0.3, SNAP_FAR_X = 0.05, SNAP_Y = 0.035;
+    private boolean snapStrong, snapLeft;
 
     /** Nearer than this the ball is at the feet and the push goes along the heading, m. */
     private static final double PUSH_AT_FEET = 0.25;

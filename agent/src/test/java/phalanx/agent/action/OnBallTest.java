@@ -136,6 +136,36 @@ class OnBallTest {
     }
 
     @Test
+    void pressedWithAStillBallAtAKickSpotAndTheGoalAheadItShootsAtOnce() {
+        // At (7, 0) facing the goal (8 m off), an opponent 0.5 m from the ball, the ball still at the strong kick's spot
+        // of the right foot: the snap shot, the strong kick with the right foot, this cycle.
+        OnBall a = new OnBall(C);
+        Move m = a.decide(World.at(7, 0, 0).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation()).move();
+        assertEquals(OnBall.State.KICK, a.state());
+        assertEquals(new Move.Kick(true, false), m);
+        // The same ball on the left foot's spot: the left foot.
+        OnBall l = new OnBall(C);
+        assertEquals(new Move.Kick(true, true), l.decide(World.at(7, 0, 0).ballRel(0.21, 0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation()).move());
+        // A rolling ball, a ball 0.3 m ahead (off the spot), the heading 20 deg off the goal, or farther than snapWithin: it dribbles.
+        OnBall b = new OnBall(C);
+        b.decide(World.at(7, 0, 0).ballRel(0.21, -0.04).ballVelocity(0.6, 0).opponentAt(5, 7.6, 0.3).situation());
+        assertEquals(OnBall.State.DRIBBLE, b.state());
+        OnBall c = new OnBall(C);
+        c.decide(World.at(7, 0, 0).ballRel(0.3, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation());
+        assertEquals(OnBall.State.DRIBBLE, c.state());
+        OnBall d = new OnBall(C);
+        d.decide(World.at(7, 0, 20).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.4).situation());
+        assertEquals(OnBall.State.DRIBBLE, d.state());
+        OnBall e = new OnBall(C);
+        e.decide(World.at(0, 0, 0).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 0.6, 0.3).situation());
+        assertEquals(OnBall.State.DRIBBLE, e.state(), "15 m from the goal: beyond snapWithin");
+        // Off (snapWithin 0): it dribbles as before.
+        OnBall f = new OnBall(C.withKick(C.kick().withSnapWithin(0)));
+        f.decide(World.at(7, 0, 0).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation());
+        assertEquals(OnBall.State.DRIBBLE, f.state());
+    }
+
+    @Test
     void aDribbleFollowsTheBallItPushedOnAndStartsAgainOnlyWhenItIsFarOrNotAhead() {
         // Pressed at (8, 0) facing 20°: DRIBBLE. Its step pushes the ball 0.9 m straight on (session 21: 0.5-1.4 m).
         OnBall a = new OnBall(C);
