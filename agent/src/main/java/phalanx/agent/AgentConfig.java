@@ -136,6 +136,18 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
          */
         public static final Kick TYPE_4 = DEFAULT.withStrongSpot(0.185, -0.035);
 
+        /**
+         * quick_kick.xml's ball spot, right foot (motions/README.md: searched for it, 7.93 m median from it, 7.24 m with
+         * the ball up to 2.5 cm off): ahead, and to the side (negative: right).
+         */
+        public static final double QUICK_X = 0.163, QUICK_Y = -0.041;
+
+        /** The spot's distance ahead for the quick, strong or normal kick. */
+        public double spotX(boolean strong, boolean quick) { return quick ? QUICK_X : spotX(strong); }
+
+        /** The spot's sideways offset for the quick, strong or normal kick, left foot (the mirror) or right. */
+        public double spotY(boolean strong, boolean quick, boolean leftFoot) { return quick ? (leftFoot ? -QUICK_Y : QUICK_Y) : spotY(strong, leftFoot); }
+
         /** The spot's distance ahead for the strong kick or the normal one. */
         public double spotX(boolean strong) { return strong ? strongSpotX : spotX; }
 

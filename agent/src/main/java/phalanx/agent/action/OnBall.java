@@ -94,7 +94,7 @@ public final class OnBall implements Action {
                 case DRIBBLE -> {
                     double toGoal = dribbles(s) ? goalDirection(s) : pressedHeading(s);
                     if (Double.isNaN(toGoal)) { state = State.ALIGN; continue; }
-                    if (snaps(s, ball)) { state = State.KICK; kick.start(s, snapStrong, snapLeft); continue; }
+                    if (snaps(s, ball)) { state = State.PREPARE; prepare.choose(s, false, true); continue; }
                     dribble.direction(toGoal);
                     return dribble.decide(s);
                 }
@@ -103,7 +103,7 @@ public final class OnBall implements Action {
                     if (!Double.isNaN(e) && Math.abs(e) > 2 * tolerance(s)) { state = State.ALIGN; return orbit.step(s, ball, e); }
                     if (!prepare.done(s)) return prepare.decide(s);
                     state = State.KICK;
-                    kick.start(s, prepare.strong(), prepare.leftFoot());
+                    kick.start(s, prepare.strong(), prepare.leftFoot(), prepare.quick());
                 }
                 case KICK -> {
                     if (!kick.done(s)) {
@@ -154,10 +154,10 @@ public final class OnBall implements Action {
     }
 
     /**
-     * A snap shot: dribbling in PlayOn between shootWithin and snapWithin of the opponent goal, the heading on the goal
-     * (the alignment tolerance), the ball still (under SNAP_STILL) and at a kick's spot of either foot, the kick for
-     * that distance (strong beyond strongBeyond); the window reaches SNAP_FAR_X beyond the spot, wider than Prepare
-     * For Kick's, since a dribbler never lines up. Sets the foot and the kick.
+     * A quick shot: dribbling in PlayOn between shootWithin and snapWithin of the opponent goal with the heading on the
+     * goal (the alignment tolerance) and the ball just ahead (within QUICK_REACH ahead, QUICK_SIDE aside): Prepare For
+     * Kick puts it on the quick kick's spot, which is kicked without the stand before it (act.Body). The dribble keeps the
+     * ball between the feet, 0.1-0.6 m ahead, where no kick's spot is (session 26), so it must be put there.
      */
     private boolean snaps(Situation s, Vector2 ball) {
         AgentConfig.Kick k = config.kick();
@@ -165,17 +165,11 @@ public final class OnBall implements Action {
         if (k.snapWithin() <= 0 || s.playMode() != PlayMode.PLAY_ON || ball == null || Double.isNaN(d) || d > k.snapWithin() || shoots(d))
             return false;
         double e = goalError(s);
-        Vector2 v = Facts.ballVelocity(s);
-        if (Double.isNaN(e) || Math.abs(e) > tolerance(s) || v == null || v.norm() > SNAP_STILL) return false;
-        snapStrong = strong(s);
-        snapLeft = ball.y() > 0;
-        double ex = ball.x() - k.spotX(snapStrong), ey = ball.y() - k.spotY(snapStrong, snapLeft);
-        return ex >= -k.toleranceX() && ex <= SNAP_FAR_X && Math.abs(ey) <= SNAP_Y;
+        return !Double.isNaN(e) && Math.abs(e) <= tolerance(s) && ball.x() > 0 && ball.x() <= QUICK_REACH && Math.abs(ball.y()) <= QUICK_SIDE;
     }
 
-    /** A snap shot's ball: slower than this (m/s), up to this far beyond the kick's spot and this far to its side (m). */
-    private static final double SNAP_STILL = 0.3, SNAP_FAR_X = 0.05, SNAP_Y = 0.035;
-    private boolean snapStrong, snapLeft;
+    /** A quick shot's ball: at most this far ahead and this far aside (m). */
+    private static final double QUICK_REACH = 0.5, QUICK_SIDE = 0.15;
 
     /** Nearer than this the ball is at the feet and the push goes along the heading, m. */
     private static final double PUSH_AT_FEET = 0.25;

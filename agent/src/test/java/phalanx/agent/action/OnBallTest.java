@@ -130,38 +130,35 @@ class OnBallTest {
         OnBall f = new OnBall(C.withKick(C.kick().withDribbleWithin(8)));
         f.decide(World.at(12.8, 0, 0).ballRel(0.25, -0.055).situation());
         assertEquals(OnBall.State.PREPARE, f.state(), "aligned 2 m out: kick, not dribble");
-        OnBall g = new OnBall(C.withKick(C.kick().withDribbleWithin(8).withShootWithin(0)));
+        OnBall g = new OnBall(C.withKick(C.kick().withDribbleWithin(8).withShootWithin(0).withSnapWithin(0)));
         g.decide(World.at(12.8, 0, 0).ballRel(0.25, -0.055).situation());
-        assertEquals(OnBall.State.DRIBBLE, g.state(), "shootWithin 0: dribble on as before");
+        assertEquals(OnBall.State.DRIBBLE, g.state(), "shootWithin and snapWithin 0: dribble on as before");
     }
 
     @Test
-    void pressedWithAStillBallAtAKickSpotAndTheGoalAheadItShootsAtOnce() {
-        // At (7, 0) facing the goal (8 m off), an opponent 0.5 m from the ball, the ball still at the strong kick's spot
-        // of the right foot: the snap shot, the strong kick with the right foot, this cycle.
+    void pressedNearTheGoalWithTheHeadingOnItItPreparesAndPlaysTheQuickKick() {
+        // At (7, 0) facing the goal (8 m off), an opponent 0.5 m from the ball, the ball 0.3 m ahead between the feet: it
+        // prepares for the quick kick (not the dribble), steps up to its spot, and kicks it with the right foot.
         OnBall a = new OnBall(C);
-        Move m = a.decide(World.at(7, 0, 0).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation()).move();
+        Move m = a.decide(World.at(7, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 7.6, 0.3).situation()).move();
+        assertEquals(OnBall.State.PREPARE, a.state());
+        assertTrue(m instanceof Move.SideStep || m instanceof Move.Walk, m.toString());
+        Move k = a.decide(World.at(7, 0, 0).ballRel(0.165, -0.04).opponentAt(5, 7.6, 0.3).situation()).move();
         assertEquals(OnBall.State.KICK, a.state());
-        assertEquals(new Move.Kick(true, false), m);
-        // The same ball on the left foot's spot: the left foot.
-        OnBall l = new OnBall(C);
-        assertEquals(new Move.Kick(true, true), l.decide(World.at(7, 0, 0).ballRel(0.21, 0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation()).move());
-        // A rolling ball, a ball 0.3 m ahead (off the spot), the heading 20 deg off the goal, or farther than snapWithin: it dribbles.
-        OnBall b = new OnBall(C);
-        b.decide(World.at(7, 0, 0).ballRel(0.21, -0.04).ballVelocity(0.6, 0).opponentAt(5, 7.6, 0.3).situation());
-        assertEquals(OnBall.State.DRIBBLE, b.state());
-        OnBall c = new OnBall(C);
-        c.decide(World.at(7, 0, 0).ballRel(0.3, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation());
-        assertEquals(OnBall.State.DRIBBLE, c.state());
+        assertEquals(new Move.Kick(false, false, true), k);
+        // The heading 20 deg off the goal, the ball 0.8 m ahead, or 15 m from the goal: it dribbles.
         OnBall d = new OnBall(C);
-        d.decide(World.at(7, 0, 20).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.4).situation());
+        d.decide(World.at(7, 0, 20).ballRel(0.3, -0.01).opponentAt(5, 7.6, 0.4).situation());
         assertEquals(OnBall.State.DRIBBLE, d.state());
+        OnBall far = new OnBall(C);
+        far.decide(World.at(7, 0, 0).ballRel(0.8, 0).opponentAt(5, 8.1, 0.3).situation());
+        assertNotEquals(OnBall.State.PREPARE, far.state());
         OnBall e = new OnBall(C);
-        e.decide(World.at(0, 0, 0).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 0.6, 0.3).situation());
+        e.decide(World.at(0, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 0.6, 0.3).situation());
         assertEquals(OnBall.State.DRIBBLE, e.state(), "15 m from the goal: beyond snapWithin");
         // Off (snapWithin 0): it dribbles as before.
         OnBall f = new OnBall(C.withKick(C.kick().withSnapWithin(0)));
-        f.decide(World.at(7, 0, 0).ballRel(0.21, -0.04).ballVelocity(0, 0).opponentAt(5, 7.6, 0.3).situation());
+        f.decide(World.at(7, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 7.6, 0.3).situation());
         assertEquals(OnBall.State.DRIBBLE, f.state());
     }
 
