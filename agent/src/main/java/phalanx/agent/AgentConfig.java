@@ -111,6 +111,10 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          21's games the ball lay still with players of both teams within 1 m of it for 190-200 s a
      *                          game, and UT Austin Villa moved it next in 36 of 58 such contests; our player side-steps
      *                          at 0.1 m/s, slower still beside an opponent); 0 = only once aligned, as before
+     * @param snapWithin        dribbling (pressed or near the goal) with the ball within this of the opponent goal, but not
+     *                          within shootWithin, a ball that lies still at a kick's spot with the heading aimed at the goal
+     *                          is kicked there and then (ours, issue 18: against UT Austin Villa 100 s a game of pressed
+     *                          dribbling 4-12 m from their goal and no shot on goal in 13 games); 0 = never
      */
     /**
      * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params
@@ -122,15 +126,27 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
     public record Kick(double spotX, double spotY, double strongSpotX, double strongSpotY, double toleranceX, double toleranceFarX, double toleranceY, double restartDistance,
                        double alignDegPerMetre, double alignMinDeg, double alignMaxDeg, double strongBeyond,
                        double oneShotTimeout, double dribbleWithin, double pressureDistance, double pressureMaxDeg,
-                       double shootWithin, double dribbleRestartDistance, double pressureReach) {
+                       double shootWithin, double dribbleRestartDistance, double pressureReach, double snapWithin) {
         public static final Kick DEFAULT = new Kick(0.17, -0.055, STRONG_X, STRONG_Y, 0.03, 0.01, 0.025, 0.5, 2.5, 10, 45, 5.0, 4.0, 0,
-                1.0, 90, 4.0, 1.5, 0.8);
+                1.0, 90, 4.0, 1.5, 0.8, 12.0);
 
         /**
          * Type 4 (toes) plays its own strong kick, motions/type4/strong_kick.xml (the shared one falls in 4
          * of 10 kicks on that type), tuned for this spot (motions/README.md, `scripts/phalanx bench kick-search params`).
          */
         public static final Kick TYPE_4 = DEFAULT.withStrongSpot(0.185, -0.035);
+
+        /**
+         * quick_kick.xml's ball spot, right foot (motions/README.md: searched for it, 7.93 m median from it, 7.24 m with
+         * the ball up to 2.5 cm off): ahead, and to the side (negative: right).
+         */
+        public static final double QUICK_X = 0.163, QUICK_Y = -0.041;
+
+        /** The spot's distance ahead for the quick, strong or normal kick. */
+        public double spotX(boolean strong, boolean quick) { return quick ? QUICK_X : spotX(strong); }
+
+        /** The spot's sideways offset for the quick, strong or normal kick, left foot (the mirror) or right. */
+        public double spotY(boolean strong, boolean quick, boolean leftFoot) { return quick ? (leftFoot ? -QUICK_Y : QUICK_Y) : spotY(strong, leftFoot); }
 
         /** The spot's distance ahead for the strong kick or the normal one. */
         public double spotX(boolean strong) { return strong ? strongSpotX : spotX; }
@@ -144,33 +160,38 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
         /** The same with another strong-kick spot (a robot type with its own strong_kick.xml). */
         public Kick withStrongSpot(double x, double y) {
             return new Kick(spotX, spotY, x, y, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach, snapWithin);
         }
 
         public Kick withDribbleWithin(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, metres, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach);
+                    strongBeyond, oneShotTimeout, metres, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach, snapWithin);
         }
 
         public Kick withPressureDistance(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, metres, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach);
+                    strongBeyond, oneShotTimeout, dribbleWithin, metres, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach, snapWithin);
         }
 
         public Kick withDribbleRestartDistance(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, metres, pressureReach);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, metres, pressureReach, snapWithin);
         }
 
         /** The same with another reach and angle for walking through a contested ball (reach 0 = only once aligned). */
         public Kick withPressure(double reach, double maxDeg) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, maxDeg, shootWithin, dribbleRestartDistance, reach);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, maxDeg, shootWithin, dribbleRestartDistance, reach, snapWithin);
+        }
+
+        public Kick withSnapWithin(double metres) {
+            return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, shootWithin, dribbleRestartDistance, pressureReach, metres);
         }
 
         public Kick withShootWithin(double metres) {
             return new Kick(spotX, spotY, strongSpotX, strongSpotY, toleranceX, toleranceFarX, toleranceY, restartDistance, alignDegPerMetre, alignMinDeg, alignMaxDeg,
-                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, metres, dribbleRestartDistance, pressureReach);
+                    strongBeyond, oneShotTimeout, dribbleWithin, pressureDistance, pressureMaxDeg, metres, dribbleRestartDistance, pressureReach, snapWithin);
         }
     }
 

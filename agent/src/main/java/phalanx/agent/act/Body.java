@@ -60,8 +60,10 @@ public final class Body {
             }
             return walkStep(p, wanted);
         }
-        // stop before kicking, and stand still a moment (MotionConfig.standBeforeSeconds)
-        if (wanted == null && !urgent && !keyframeUsed && (walk.walking() || stoodFor < standBeforeCycles)) {
+        // stop before kicking, and stand still a moment (MotionConfig.standBeforeSeconds); the quick kick is for a
+        // pressed player and goes as soon as the walk has stopped
+        boolean quick = move instanceof Move.Kick k && k.quick();
+        if (wanted == null && !urgent && !keyframeUsed && (walk.walking() || !quick && stoodFor < standBeforeCycles)) {
             return walkStep(p, WalkVelocity.ZERO);
         }
         keyframeUsed = true;

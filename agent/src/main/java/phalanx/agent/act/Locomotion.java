@@ -19,6 +19,7 @@ public final class Locomotion {
         if (move instanceof Move.SideStep s) return MotionRequest.of(s.left() ? "side_step_left" : "side_step_right");
         if (move instanceof Move.StepBack) return MotionRequest.NONE; // no keyframe file: only the walk (Body) steps back
         if (move instanceof Move.Kick k) { // literals: no string built in the think cycle
+            if (k.quick()) return MotionRequest.of(k.left() ? "quick_kick_left" : "quick_kick");
             return MotionRequest.of(k.strong() ? (k.left() ? "strong_kick_left" : "strong_kick") : (k.left() ? "kick_left" : "kick"));
         }
         if (move instanceof Move.StandUp u) return MotionRequest.of(u.fromFront() ? "stand_up_front" : "stand_up_back").interrupting();

@@ -15,6 +15,7 @@ public final class KickBall implements Action {
     private final TrackObject track;
     private boolean strong;
     private boolean left;
+    private boolean quick;
 
     public KickBall(AgentConfig config) {
         this.play = new OneShot(config.kick().oneShotTimeout());
@@ -22,16 +23,20 @@ public final class KickBall implements Action {
     }
 
     /** Begins a kick this cycle. */
-    public void start(Situation s, boolean strongKick, boolean leftFoot) {
+    public void start(Situation s, boolean strongKick, boolean leftFoot) { start(s, strongKick, leftFoot, false); }
+
+    /** Begins a kick this cycle, the quick kick when {@code quickKick}. */
+    public void start(Situation s, boolean strongKick, boolean leftFoot, boolean quickKick) {
         strong = strongKick;
         left = leftFoot;
+        quick = quickKick;
         play.start(s);
     }
 
     @Override
     public Decision decide(Situation s) {
         if (!play.active() || play.finished(s)) return Decision.of(Move.STAND, track.head(s));
-        return Decision.of(play.requesting() ? new Move.Kick(strong, left) : Move.STAND, track.head(s));
+        return Decision.of(play.requesting() ? new Move.Kick(strong, left, quick) : Move.STAND, track.head(s));
     }
 
     @Override

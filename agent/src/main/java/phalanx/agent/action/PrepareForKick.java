@@ -34,11 +34,18 @@ public final class PrepareForKick implements Action {
      * Prepares for the strong or the normal kick (each has its spot) with the foot whose spot is nearer
      * the ball now; both are kept until the next call.
      */
-    public void choose(Situation s, boolean strongKick) {
+    public void choose(Situation s, boolean strongKick) { choose(s, strongKick, false); }
+
+    /** The same for the quick kick's spot when {@code quickKick}. */
+    public void choose(Situation s, boolean strongKick, boolean quickKick) {
         Vector2 ball = Facts.ball(s, config);
         left = ball != null && ball.y() > 0;
         strong = strongKick;
+        quick = quickKick;
     }
+
+    /** True when preparing for the quick kick. */
+    public boolean quick() { return quick; }
 
     /** True when the kick is to be played with the left foot. */
     public boolean leftFoot() { return left; }
@@ -51,7 +58,7 @@ public final class PrepareForKick implements Action {
         Vector2 ball = Facts.ball(s, config);
         if (ball == null || ready(ball)) return Decision.of(Move.STAND, track.head(s));
         AgentConfig.Kick k = config.kick();
-        if (ball.x() < k.spotX(strong) - k.toleranceX()) {
+        if (ball.x() < k.spotX(strong, quick) - k.toleranceX()) {
             if (Double.isNaN(backSince)) { backSince = s.gameTime(); backBallX = ball.x(); }
             // A ball caught at the feet comes back with each step: in a game against UT Austin Villa (session 24) a
             // player stepped back 12 s with the ball 8 cm in front of it and took it 3 m toward our goal. A side step
@@ -61,7 +68,7 @@ public final class PrepareForKick implements Action {
             return Decision.of(new Move.StepBack(), track.head(s));
         }
         backSince = Double.NaN;
-        double ey = ball.y() - k.spotY(strong, left);
+        double ey = ball.y() - k.spotY(strong, quick, left);
         if (Math.abs(ey) > k.toleranceY()) return Decision.of(new Move.SideStep(ey > 0), track.head(s));
         return Decision.of(new Move.Walk(0, true), track.head(s));
     }
@@ -71,6 +78,7 @@ public final class PrepareForKick implements Action {
     /** ... with the ball not this much farther than when it began (m), the ball is caught at the feet. */
     private static final double STUCK_GAIN = 0.03;
     private double backSince = Double.NaN, backBallX;
+    private boolean quick;
 
     @Override
     public boolean done(Situation s) {
@@ -80,7 +88,7 @@ public final class PrepareForKick implements Action {
 
     private boolean ready(Vector2 ball) {
         AgentConfig.Kick k = config.kick();
-        double ex = ball.x() - k.spotX(strong);
-        return ex >= -k.toleranceX() && ex <= k.toleranceFarX() && Math.abs(ball.y() - k.spotY(strong, left)) <= k.toleranceY();
+        double ex = ball.x() - k.spotX(strong, quick);
+        return ex >= -k.toleranceX() && ex <= k.toleranceFarX() && Math.abs(ball.y() - k.spotY(strong, quick, left)) <= k.toleranceY();
     }
 }

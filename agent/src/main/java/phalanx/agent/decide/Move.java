@@ -48,9 +48,12 @@ public sealed interface Move {
 
     /**
      * Kick with the right foot, or the left one if {@code left} (the ball in front of that foot: Prepare
-     * for Kick); {@code strong} for the strong kick.
+     * for Kick); {@code strong} for the strong kick, {@code quick} for the quick kick (0.9 s, played without the
+     * stand before it: motions/README.md).
      */
-    record Kick(boolean strong, boolean left) implements Move {}
+    record Kick(boolean strong, boolean left, boolean quick) implements Move {
+        public Kick(boolean strong, boolean left) { this(strong, left, false); }
+    }
 
     /** Get up; {@code fromFront} when lying face down. */
     record StandUp(boolean fromFront) implements Move {}

@@ -46,7 +46,9 @@ class BodyTest {
         String xml = "<motion><phase name=\"A\"><effectors><llj3>10</llj3></effectors><duration>100</duration></phase></motion>";
         var kick = phalanx.motion.phase.PhaseMotionLoader.parse("kick", "kick.xml",
                 new java.io.ByteArrayInputStream(xml.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
-        return new Body(new MotionController(MotionLibrary.of(kick), config), WalkConfig.DEFAULT, config, 0);
+        var quick = phalanx.motion.phase.PhaseMotionLoader.parse("quick_kick", "quick_kick.xml",
+                new java.io.ByteArrayInputStream(xml.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        return new Body(new MotionController(MotionLibrary.of(kick, quick), config), WalkConfig.DEFAULT, config, 0);
     }
 
     /** Cycles from the end of a keyframe "kick" until the walk commands motion, with this settle time. */
@@ -85,13 +87,15 @@ class BodyTest {
     }
 
     /** Cycles between the walk's last step and the start of a kick requested while walking, with this stand time. */
-    private static int cyclesStoodBeforeKick(double standSeconds) throws Exception {
+    private static int cyclesStoodBeforeKick(double standSeconds) throws Exception { return cyclesStoodBeforeKick(standSeconds, new Move.Kick(false, false)); }
+
+    private static int cyclesStoodBeforeKick(double standSeconds, Move.Kick k) throws Exception {
         Body body = withKick(MotionConfig.DEFAULT.withStand(standSeconds, 0));
         int i = 0;
         for (; i < 50; i++) body.step(standing(i * 0.02), new Move.Walk(0, false));
         int still = 0;
         for (; i < 300 && body.keyframes().playing() == null; i++) {
-            body.step(standing(i * 0.02), new Move.Kick(false, false));
+            body.step(standing(i * 0.02), k);
             still = body.odometry().equals(phalanx.motion.walk.Odometry.NONE) ? still + 1 : 0;
         }
         return body.keyframes().playing() == null ? -1 : still - 1;   // the cycle the kick started is no stand
@@ -103,6 +107,7 @@ class BodyTest {
         int none = cyclesStoodBeforeKick(0);
         assertTrue(none >= 0 && none < 25, "no stand time: the kick starts once the walk has stopped: " + none);
         assertEquals(none + 20, cyclesStoodBeforeKick(0.4), "0.4 s: 20 more cycles of standing first");
+        assertEquals(none, cyclesStoodBeforeKick(0.4, new Move.Kick(false, false, true)), "the quick kick: no stand time");
     }
 
     @Test
@@ -111,5 +116,7 @@ class BodyTest {
         assertEquals("strong_kick", Locomotion.request(new Move.Kick(true, false)).motion());
         assertEquals("kick_left", Locomotion.request(new Move.Kick(false, true)).motion());
         assertEquals("strong_kick_left", Locomotion.request(new Move.Kick(true, true)).motion());
+        assertEquals("quick_kick", Locomotion.request(new Move.Kick(false, false, true)).motion());
+        assertEquals("quick_kick_left", Locomotion.request(new Move.Kick(true, true, true)).motion());
     }
 }

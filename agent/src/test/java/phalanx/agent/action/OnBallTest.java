@@ -130,9 +130,57 @@ class OnBallTest {
         OnBall f = new OnBall(C.withKick(C.kick().withDribbleWithin(8)));
         f.decide(World.at(12.8, 0, 0).ballRel(0.25, -0.055).situation());
         assertEquals(OnBall.State.PREPARE, f.state(), "aligned 2 m out: kick, not dribble");
-        OnBall g = new OnBall(C.withKick(C.kick().withDribbleWithin(8).withShootWithin(0)));
+        OnBall g = new OnBall(C.withKick(C.kick().withDribbleWithin(8).withShootWithin(0).withSnapWithin(0)));
         g.decide(World.at(12.8, 0, 0).ballRel(0.25, -0.055).situation());
-        assertEquals(OnBall.State.DRIBBLE, g.state(), "shootWithin 0: dribble on as before");
+        assertEquals(OnBall.State.DRIBBLE, g.state(), "shootWithin and snapWithin 0: dribble on as before");
+    }
+
+    @Test
+    void pressedNearTheGoalWithTheHeadingOnItItPreparesAndPlaysTheQuickKick() {
+        // At (7, 0) facing the goal (8 m off), an opponent 0.55 m from the ball beside and behind it, the ball 0.3 m ahead
+        // between the feet: it prepares for the quick kick (not the dribble), steps up to its spot, and kicks it with the right foot.
+        OnBall a = new OnBall(C);
+        Move m = a.decide(World.at(7, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 7.1, 0.5).situation()).move();
+        assertEquals(OnBall.State.PREPARE, a.state());
+        assertTrue(m instanceof Move.SideStep || m instanceof Move.Walk, m.toString());
+        Move k = a.decide(World.at(7, 0, 0).ballRel(0.165, -0.04).opponentAt(5, 7.1, 0.5).situation()).move();
+        assertEquals(OnBall.State.KICK, a.state());
+        assertEquals(new Move.Kick(false, false, true), k);
+        // The heading 20 deg off the goal, the ball 0.8 m ahead, or 15 m from the goal: it dribbles.
+        OnBall d = new OnBall(C);
+        d.decide(World.at(7, 0, 20).ballRel(0.3, -0.01).opponentAt(5, 7.6, 0.4).situation());
+        assertEquals(OnBall.State.DRIBBLE, d.state());
+        OnBall far = new OnBall(C);
+        far.decide(World.at(7, 0, 0).ballRel(0.8, 0).opponentAt(5, 8.1, 0.3).situation());
+        assertNotEquals(OnBall.State.PREPARE, far.state());
+        OnBall e = new OnBall(C);
+        e.decide(World.at(0, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 0.6, 0.3).situation());
+        assertEquals(OnBall.State.DRIBBLE, e.state(), "15 m from the goal: beyond snapWithin");
+        // Off (snapWithin 0): it dribbles as before.
+        OnBall f = new OnBall(C.withKick(C.kick().withSnapWithin(0)));
+        f.decide(World.at(7, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 7.1, 0.5).situation());
+        assertEquals(OnBall.State.DRIBBLE, f.state());
+    }
+
+    @Test
+    void aDefenderInTheShotsLaneStopsTheQuickShot() {
+        // The defender 0.3 m beyond the ball and 0.3 m aside (session 26's u4: 4 of 5 quick kicks into a defender's legs): dribble on.
+        OnBall b = new OnBall(C);
+        b.decide(World.at(7, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 7.6, 0.3).situation());
+        assertEquals(OnBall.State.DRIBBLE, b.state(), "the lane is blocked");
+        // Preparing with the lane free, then the defender steps into it: back to the dribble, no kick.
+        OnBall p = new OnBall(C);
+        p.decide(World.at(7, 0, 0).ballRel(0.3, -0.01).opponentAt(5, 7.1, 0.5).situation());
+        assertEquals(OnBall.State.PREPARE, p.state());
+        Move m = p.decide(World.at(7, 0, 0).ballRel(0.165, -0.04).opponentAt(5, 7.4, 0.1).situation()).move();
+        assertEquals(OnBall.State.DRIBBLE, p.state());
+        assertFalse(m instanceof Move.Kick, m.toString());
+        // A defender 1 m beyond the ball, or 0.5 m aside of the lane, leaves it free.
+        for (double[] at : new double[][]{{8.4, 0}, {7.6, 0.5}}) {
+            OnBall f = new OnBall(C);
+            f.decide(World.at(7, 0, 0).ballRel(0.3, -0.01).opponentAt(5, at[0], at[1]).opponentAt(6, 7.1, 0.5).situation());
+            assertEquals(OnBall.State.PREPARE, f.state(), "a defender at " + at[0] + ", " + at[1]);
+        }
     }
 
     @Test
