@@ -111,10 +111,12 @@ public record AgentConfig(Head head, Beliefs beliefs, Walk walk, Kick kick, Obst
      *                          21's games the ball lay still with players of both teams within 1 m of it for 190-200 s a
      *                          game, and UT Austin Villa moved it next in 36 of 58 such contests; our player side-steps
      *                          at 0.1 m/s, slower still beside an opponent); 0 = only once aligned, as before
-     * @param snapWithin        dribbling (pressed or near the goal) with the ball within this of the opponent goal, but not
-     *                          within shootWithin, a ball that lies still at a kick's spot with the heading aimed at the goal
-     *                          is kicked there and then (ours, issue 18: against UT Austin Villa 100 s a game of pressed
-     *                          dribbling 4-12 m from their goal and no shot on goal in 13 games); 0 = never
+     * @param snapWithin        the quick shot (OnBall): dribbling (pressed or near the goal) with the ball within this of the
+     *                          opponent goal, but not within shootWithin, the heading on the goal, the ball just ahead and
+     *                          the shot's lane free of opponents, the ball is put on the quick kick's spot and kicked without
+     *                          the stand before a kick (ours, issue 18: against UT Austin Villa 100 s a game of pressed
+     *                          dribbling 4-12 m from their goal and no shot on goal in 13 games; docs/matches.md, sessions
+     *                          26-27); 0 = never
      */
     /**
      * strong_kick.xml's ball spot, the one its search tuned it for (motions/README.md; `scripts/phalanx bench kick-search params
