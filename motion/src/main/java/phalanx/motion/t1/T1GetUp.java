@@ -10,40 +10,63 @@ import java.util.function.ToDoubleFunction;
 /**
  * Getting the T1 up after a fall on rcssservermj: once the torso is tilted past {@link Config#fallenTiltDeg()},
  * wait until it lies still (or {@link Config#maxWaitS()}), play get_up_front or get_up_back (motions/t1,
- * {@link T1MotionPlayer}) for the side it lies on, and if it is still down at the end, start again. The referee
- * takes a field player off after 15 s on the ground (docs/rcssservermj.md), so a get-up must not wait long.
+ * {@link T1MotionPlayer}) for the side it lies on, then {@link Config#recoverS()} of a recovery stand (the gait's
+ * stand pose with the recovery config's torso feedback, {@link T1GaitConfig#getUpRecovery()}: the get-ups are leaps,
+ * and most that failed fell forward in the first second after landing), and if it is down at the end of either,
+ * start again. The referee takes a field player off after 15 s on the ground (docs/rcssservermj.md), so a get-up
+ * must not wait long.
  */
 public final class T1GetUp {
     /**
      * @param fallenTiltDeg torso up axis this far from vertical = fallen (the agent's upright test: 60 deg)
      * @param stillDegS     lying still: gyro below this, deg/s, on both tilt axes
      * @param maxWaitS      longest wait for lying still before the get-up starts anyway, s
+     * @param recoverS      the recovery stand after the motion, s (0: none, the caller's gait at once)
      */
-    public record Config(double fallenTiltDeg, double stillDegS, double maxWaitS) {
-        public static final Config DEFAULT = new Config(60, 30, 1.0);
+    public record Config(double fallenTiltDeg, double stillDegS, double maxWaitS, double recoverS) {
+        public static final Config DEFAULT = new Config(60, 30, 1.0, RECOVER_S);
+
+        public Config {
+            if (!(fallenTiltDeg > 0 && fallenTiltDeg < 180)) throw new IllegalArgumentException("fallenTiltDeg must be in (0, 180), got " + fallenTiltDeg);
+            if (!(stillDegS > 0)) throw new IllegalArgumentException("stillDegS must be positive, got " + stillDegS);
+            if (!(maxWaitS >= 0)) throw new IllegalArgumentException("maxWaitS must be at least 0, got " + maxWaitS);
+            if (!(recoverS >= 0)) throw new IllegalArgumentException("recoverS must be at least 0, got " + recoverS);
+        }
+
+        public Config withRecoverS(double s) { return new Config(fallenTiltDeg, stillDegS, maxWaitS, s); }
     }
 
-    public enum State { UP, LYING, GETTING_UP }
+    /** See {@link Config#recoverS()}; measured in motion/README.md "T1 get-up". */
+    static final double RECOVER_S = 1.0;
+
+    public enum State { UP, LYING, GETTING_UP, RECOVERING }
 
     private final T1Motion front, back;
     private final Config c;
     private final T1MotionPlayer player;
+    private final T1Gait recovery;
     private State state = State.UP;
-    private double lyingSince;
+    private double lyingSince, recoverUntil;
     private long getUps, retries;
     private boolean failed;   // the last get-up ended with the robot still down
 
-    public T1GetUp(T1Motion front, T1Motion back, Config config, double dt) {
+    /** With {@code recovery} as the recovery stand's config (its dt is the cycle). */
+    public T1GetUp(T1Motion front, T1Motion back, Config config, T1GaitConfig recovery) {
         this.front = front;
         this.back = back;
         this.c = config;
-        this.player = new T1MotionPlayer(dt, T1MotionPlayer.Gains.DEFAULT);
+        this.player = new T1MotionPlayer(recovery.dt(), T1MotionPlayer.Gains.DEFAULT);
+        this.recovery = new T1Gait(recovery);
     }
 
-    /** get_up_front.motion and get_up_back.motion from a folder (motions/t1). */
-    public static T1GetUp load(Path dir, double dt) throws MotionFileException {
+    /** get_up_front.motion and get_up_back.motion from a folder (motions/t1), the default config and recovery stand. */
+    public static T1GetUp load(Path dir) throws MotionFileException {
+        return load(dir, Config.DEFAULT, T1GaitConfig.getUpRecovery());
+    }
+
+    public static T1GetUp load(Path dir, Config config, T1GaitConfig recovery) throws MotionFileException {
         return new T1GetUp(T1MotionLoader.load(dir.resolve("get_up_front.motion")), T1MotionLoader.load(dir.resolve("get_up_back.motion")),
-                Config.DEFAULT, dt);
+                config, recovery);
     }
 
     public State state() { return state; }
@@ -54,21 +77,43 @@ public final class T1GetUp {
     /** Of those, the ones started because the one before ended with the robot still down. */
     public long retries() { return retries; }
 
-    /** The motion playing, or null. */
-    public String playing() { return state == State.GETTING_UP ? player.motion().name() : null; }
+    /** The motion playing ("recover" in the recovery stand), or null. */
+    public String playing() { return state == State.GETTING_UP ? player.motion().name() : state == State.RECOVERING ? "recover" : null; }
 
     /**
      * One cycle: the torso quaternion (w, x, y, z), the gyro (deg/s), the measured joint angles (deg, by actuator)
      * and the time (s). Returns the get-up's joint commands while it is in control, or null when the robot is up
-     * (then the caller's gait acts; while lying still before a get-up, too).
+     * (then the caller's gait acts; while lying still before a get-up, too). The recovery stand after the motion is
+     * part of the get-up: its commands are returned too.
      */
     public List<JointCommand> update(double[] quat, double[] gyroDegS, ToDoubleFunction<String> measuredDeg, double time) {
-        if (state == State.GETTING_UP) {
-            List<JointCommand> out = player.next();
-            if (!player.active()) state = fallen(quat) ? State.LYING : State.UP;
-            if (state == State.LYING) {
+        if (state == State.RECOVERING) {
+            if (fallen(quat)) {
+                state = State.LYING;
                 lyingSince = time;
                 failed = true;
+            } else if (time >= recoverUntil - 1e-9) {
+                state = State.UP;
+                return null;
+            } else {
+                double[] rp = T1Model.rollPitch(quat);
+                recovery.feedback(rp[0], rp[1], gyroDegS == null ? 0 : Math.toRadians(gyroDegS[0]), gyroDegS == null ? 0 : Math.toRadians(gyroDegS[1]));
+                return recovery.stand();
+            }
+        }
+        if (state == State.GETTING_UP) {
+            List<JointCommand> out = player.next();
+            if (!player.active()) {
+                if (fallen(quat)) {
+                    state = State.LYING;
+                    lyingSince = time;
+                    failed = true;
+                } else if (c.recoverS() > 0) {
+                    state = State.RECOVERING;
+                    recoverUntil = time + c.recoverS();
+                } else {
+                    state = State.UP;
+                }
             }
             return out;
         }

@@ -1,0 +1,90 @@
+package phalanx.motion.t1;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** T1GetUp's states: lying, the get-up motion, the recovery stand after it, and a fall in it. */
+class T1GetUpTest {
+    private static final double DT = 0.02;
+    /** Face down: the torso's x axis points down (pitched +90 deg about y); upright; upright and pitched 10 deg forward. */
+    private static final double[] FRONT = {Math.sqrt(0.5), 0, Math.sqrt(0.5), 0}, UPRIGHT = {1, 0, 0, 0},
+            LEANING = {Math.cos(Math.toRadians(5)), 0, Math.sin(Math.toRadians(5)), 0};
+    private static final double[] STILL = {0, 0, 0};
+
+    private static T1GetUp getUp(double recoverS) throws Exception {
+        T1Motion m = T1MotionLoader.parse("short", "short.motion", """
+                #WEBOTS_MOTION,V1.0
+                Left_Knee_Pitch,Right_Knee_Pitch
+                00:00:100,bend,1.0,1.0
+                """);
+        return new T1GetUp(m, m, T1GetUp.Config.DEFAULT.withRecoverS(recoverS), T1GaitConfig.getUpRecovery());
+    }
+
+    /** Plays the 0.1 s motion from lying (5 cycles, the last with the robot upright); returns the time after it. */
+    private static double playMotion(T1GetUp g) {
+        assertNotNull(g.update(FRONT, STILL, a -> 0, 0), "lying still: the get-up starts at once");
+        assertEquals(T1GetUp.State.GETTING_UP, g.state());
+        for (int i = 1; i < 4; i++) assertNotNull(g.update(FRONT, STILL, a -> 0, i * DT));
+        assertNotNull(g.update(UPRIGHT, STILL, a -> 0, 4 * DT), "the motion's last cycle");
+        return 5 * DT;
+    }
+
+    @Test
+    void afterTheMotionItHoldsTheRecoveryStandWithTorsoFeedbackThenHandsOver() throws Exception {
+        T1GetUp g = getUp(0.5);
+        double t = playMotion(g);
+        assertEquals(T1GetUp.State.RECOVERING, g.state(), "up at the motion's end: the recovery stand");
+        List<JointCommand> leaning = g.update(LEANING, STILL, a -> 0, t);
+        assertEquals("recover", g.playing());
+        T1Gait expected = new T1Gait(T1GaitConfig.getUpRecovery());
+        expected.feedback(0, Math.toRadians(10), 0, 0);
+        assertEquals(byActuator(expected.stand()), byActuator(leaning), "the recovery config's stand with the torso's 10 deg lean as feedback");
+        T1Gait still = new T1Gait(T1GaitConfig.getUpRecovery());
+        assertNotEquals(byActuator(still.stand()).get("lle5"), byActuator(leaning).get("lle5"), "the lean moves the ankles");
+        int cycles = 0;
+        for (t += DT; g.update(UPRIGHT, STILL, a -> 0, t) != null; t += DT) cycles++;
+        assertEquals(0.5 / DT - 1, cycles, 1, "recoverS of commands after the motion");
+        assertEquals(T1GetUp.State.UP, g.state());
+        assertNull(g.update(UPRIGHT, STILL, a -> 0, t + DT), "then the caller's gait");
+        assertEquals(1, g.getUps());
+        assertEquals(0, g.retries());
+    }
+
+    @Test
+    void aFallInTheRecoveryStandStartsTheNextGetUpAsARetry() throws Exception {
+        T1GetUp g = getUp(1.0);
+        double t = playMotion(g);
+        assertNotNull(g.update(UPRIGHT, STILL, a -> 0, t));
+        assertNotNull(g.update(FRONT, STILL, a -> 0, t + DT), "down again, lying still: the next get-up");
+        assertEquals(T1GetUp.State.GETTING_UP, g.state());
+        assertEquals(2, g.getUps());
+        assertEquals(1, g.retries(), "the fall in the recovery stand made it a retry");
+    }
+
+    @Test
+    void withoutRecoveryTheCallersGaitActsRightAfterTheMotion() throws Exception {
+        T1GetUp g = getUp(0);
+        double t = playMotion(g);
+        assertEquals(T1GetUp.State.UP, g.state());
+        assertNull(g.update(UPRIGHT, STILL, a -> 0, t));
+    }
+
+    @Test
+    void refusesABadConfigWithItsField() {
+        var e = assertThrows(IllegalArgumentException.class, () -> T1GetUp.Config.DEFAULT.withRecoverS(-1));
+        assertTrue(e.getMessage().contains("recoverS"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> T1GetUp.Config.DEFAULT.withRecoverS(Double.NaN));
+        assertTrue(e.getMessage().contains("recoverS"), e.getMessage());
+    }
+
+    private static Map<String, JointCommand> byActuator(List<JointCommand> cmds) {
+        Map<String, JointCommand> m = new HashMap<>();
+        for (JointCommand c : cmds) assertNull(m.put(c.actuator(), c), "one command per actuator: " + c.actuator());
+        return m;
+    }
+}
