@@ -569,6 +569,11 @@ public final class T1Bench {
                 case "--seed" -> seed = Long.parseLong(args[++i]);
                 case "--motions" -> motionDir = Path.of(args[++i]);
                 case "--recover" -> getUpConfig = getUpConfig.withRecoverS(Double.parseDouble(args[++i]));
+                case "--getup-set" -> {
+                    String[] kv = fieldValue(args[i], args[i + 1]);
+                    getUpConfig = getUpConfig.with(kv[0], Double.parseDouble(kv[1]));
+                    i++;
+                }
                 case "--recover-set" -> {
                     String[] kv = fieldValue(args[i], args[i + 1]);
                     recovery = recovery.with(kv[0], Double.parseDouble(kv[1]));
@@ -599,6 +604,7 @@ public final class T1Bench {
                             --seed N (20) for the placements); the agent's T1GetUp with
                             get_up_front|back.motion from --motions DIR (motions/t1) gets it up, then its recovery stand
                             (--recover S, T1GetUp.RECOVER_S; --recover-set FIELD=VALUE changes its T1GaitConfig.getUpRecovery());
+                            --getup-set FIELD=VALUE changes T1GetUp.Config.DEFAULT (e.g. riseFeedbackS=0.4, riseAnkleRateGain=0.05);
                             per get-up whether it stood, at the first try, and how long after lying still.""");
                     return;
                 }

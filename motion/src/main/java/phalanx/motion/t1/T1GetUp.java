@@ -1,5 +1,6 @@
 package phalanx.motion.t1;
 
+import phalanx.model.robot.T1Joints;
 import phalanx.model.robot.T1Model;
 import phalanx.motion.MotionFileException;
 
@@ -18,26 +19,51 @@ import java.util.function.ToDoubleFunction;
  */
 public final class T1GetUp {
     /**
-     * @param fallenTiltDeg torso up axis this far from vertical = fallen (the agent's upright test: 60 deg)
-     * @param stillDegS     lying still: gyro below this, deg/s, on both tilt axes
-     * @param maxWaitS      longest wait for lying still before the get-up starts anyway, s
-     * @param recoverS      the recovery stand after the motion, s (0: none, the caller's gait at once)
+     * @param fallenTiltDeg     torso up axis this far from vertical = fallen (the agent's upright test: 60 deg)
+     * @param stillDegS         lying still: gyro below this, deg/s, on both tilt axes
+     * @param maxWaitS          longest wait for lying still before the get-up starts anyway, s
+     * @param recoverS          the recovery stand after the motion, s (0: none, the caller's gait at once)
+     * @param riseFeedbackS     the rise: the motion's last seconds, in which its ankle and hip pitch get the torso's pitch
+     *                          rate as feedback (0: none)
+     * @param riseAnkleRateGain in the rise, ankle pitch added per rad/s of forward torso pitch rate (toes down), rad
+     * @param riseHipRateGain   in the rise, hip pitch added per rad/s of forward torso pitch rate (hips open), rad
      */
-    public record Config(double fallenTiltDeg, double stillDegS, double maxWaitS, double recoverS) {
-        public static final Config DEFAULT = new Config(60, 30, 1.0, RECOVER_S);
+    public record Config(double fallenTiltDeg, double stillDegS, double maxWaitS, double recoverS,
+                         double riseFeedbackS, double riseAnkleRateGain, double riseHipRateGain) {
+        public static final Config DEFAULT = new Config(60, 30, 1.0, RECOVER_S, RISE_FEEDBACK_S, RISE_ANKLE_RATE_GAIN, RISE_HIP_RATE_GAIN);
 
         public Config {
             if (!(fallenTiltDeg > 0 && fallenTiltDeg < 180)) throw new IllegalArgumentException("fallenTiltDeg must be in (0, 180), got " + fallenTiltDeg);
             if (!(stillDegS > 0)) throw new IllegalArgumentException("stillDegS must be positive, got " + stillDegS);
             if (!(maxWaitS >= 0)) throw new IllegalArgumentException("maxWaitS must be at least 0, got " + maxWaitS);
             if (!(recoverS >= 0)) throw new IllegalArgumentException("recoverS must be at least 0, got " + recoverS);
+            if (!(riseFeedbackS >= 0)) throw new IllegalArgumentException("riseFeedbackS must be at least 0, got " + riseFeedbackS);
+            if (!Double.isFinite(riseAnkleRateGain)) throw new IllegalArgumentException("riseAnkleRateGain must be finite, got " + riseAnkleRateGain);
+            if (!Double.isFinite(riseHipRateGain)) throw new IllegalArgumentException("riseHipRateGain must be finite, got " + riseHipRateGain);
         }
 
-        public Config withRecoverS(double s) { return new Config(fallenTiltDeg, stillDegS, maxWaitS, s); }
+        public Config withRecoverS(double s) { return with("recoverS", s); }
+
+        /** A copy with a named field changed (the bench's --getup-set name=value). */
+        public Config with(String name, double v) {
+            return switch (name) {
+                case "fallenTiltDeg" -> new Config(v, stillDegS, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
+                case "stillDegS" -> new Config(fallenTiltDeg, v, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
+                case "maxWaitS" -> new Config(fallenTiltDeg, stillDegS, v, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
+                case "recoverS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, v, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
+                case "riseFeedbackS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, v, riseAnkleRateGain, riseHipRateGain);
+                case "riseAnkleRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFeedbackS, v, riseHipRateGain);
+                case "riseHipRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, v);
+                default -> throw new IllegalArgumentException("no T1GetUp.Config field " + name
+                        + " (fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain)");
+            };
+        }
     }
 
     /** See {@link Config#recoverS()}; measured in motion/README.md "T1 get-up". */
     static final double RECOVER_S = 1.0;
+    /** See {@link Config#riseFeedbackS()}, {@link Config#riseAnkleRateGain()}, {@link Config#riseHipRateGain()}: off until measured. */
+    static final double RISE_FEEDBACK_S = 0, RISE_ANKLE_RATE_GAIN = 0, RISE_HIP_RATE_GAIN = 0;
 
     public enum State { UP, LYING, GETTING_UP, RECOVERING }
 
@@ -103,6 +129,7 @@ public final class T1GetUp {
         }
         if (state == State.GETTING_UP) {
             List<JointCommand> out = player.next();
+            if (player.remainingS() < c.riseFeedbackS() - 1e-9 && gyroDegS != null) out = withRiseFeedback(out, Math.toRadians(gyroDegS[1]));
             if (!player.active()) {
                 if (fallen(quat)) {
                     state = State.LYING;
@@ -134,6 +161,25 @@ public final class T1GetUp {
         failed = false;
         player.start(faceDown(quat) ? front : back, measuredDeg);
         return player.next();
+    }
+
+    /**
+     * The rise's feedback: the torso pitching forward (a positive pitch rate) turns the ankles toes-down and opens the
+     * hips (as T1Gait's feedback does), each correction within T1Gait.MAX_CORRECTION and the joint's range.
+     */
+    List<JointCommand> withRiseFeedback(List<JointCommand> cmds, double pitchRateRadS) {
+        double ankle = Math.toDegrees(clamp(c.riseAnkleRateGain() * pitchRateRadS)), hip = Math.toDegrees(clamp(c.riseHipRateGain() * pitchRateRadS));
+        List<JointCommand> out = new java.util.ArrayList<>(cmds.size());
+        for (JointCommand j : cmds) {
+            String a = j.actuator();
+            double add = a.equals("lle5") || a.equals("rle5") ? ankle : a.equals("lle1") || a.equals("rle1") ? hip : 0;
+            out.add(add == 0 ? j : new JointCommand(a, T1Joints.byActuator(a).clampDeg(j.qDeg() + add), j.dqDeg(), j.kp(), j.kd(), j.tau()));
+        }
+        return out;
+    }
+
+    private static double clamp(double rad) {
+        return Math.max(-T1Gait.MAX_CORRECTION, Math.min(T1Gait.MAX_CORRECTION, rad));
     }
 
     boolean fallen(double[] q) {

@@ -75,7 +75,45 @@ class T1GetUpTest {
     }
 
     @Test
+    void inTheRiseTheTorsosPitchRateMovesTheAnklesAndHips() throws Exception {
+        T1Motion m = T1MotionLoader.parse("rise", "rise.motion", """
+                #WEBOTS_MOTION,V1.0
+                Left_Ankle_Pitch,Right_Ankle_Pitch,Left_Hip_Pitch,Right_Hip_Pitch
+                00:00:100,squat,-0.5,-0.5,-1.0,-1.0
+                00:00:200,rise,-0.3,-0.3,-0.5,-0.5
+                """);
+        T1GetUp.Config c = T1GetUp.Config.DEFAULT.with("riseFeedbackS", 0.1).with("riseAnkleRateGain", 0.05).with("riseHipRateGain", 0.02);
+        T1GetUp g = new T1GetUp(m, m, c, T1GaitConfig.getUpRecovery());
+        T1MotionPlayer plain = new T1MotionPlayer(DT, T1MotionPlayer.Gains.DEFAULT);
+        plain.start(m, a -> 0);
+        double[] forward = {0, Math.toDegrees(2.0), 0};   // pitching forward at 2 rad/s
+        for (int i = 0; i < 10; i++) {
+            Map<String, JointCommand> fb = byActuator(g.update(FRONT, i == 0 ? STILL : forward, a -> 0, i * DT)), ref = byActuator(plain.next());
+            boolean rise = i >= 5;   // after the next() of cycle i, 0.2 - 0.02 (i + 1) s are left: under 0.1 s from cycle 5 on
+            assertEquals(ref.get("lle5").qDeg() + (rise ? Math.toDegrees(0.05 * 2) : 0), fb.get("lle5").qDeg(), 1e-9, "cycle " + i + ": ankle toes down");
+            assertEquals(ref.get("rle5").qDeg() + (rise ? Math.toDegrees(0.05 * 2) : 0), fb.get("rle5").qDeg(), 1e-9, "cycle " + i);
+            assertEquals(ref.get("lle1").qDeg() + (rise ? Math.toDegrees(0.02 * 2) : 0), fb.get("lle1").qDeg(), 1e-9, "cycle " + i + ": hips open");
+            assertEquals(ref.get("lle4").qDeg(), fb.get("lle4").qDeg(), 1e-9, "the knee as the motion has it");
+            assertEquals(ref.get("lle5").dqDeg(), fb.get("lle5").dqDeg(), 1e-9, "the motion's velocity");
+        }
+        // a fast fall forward: the correction is bounded (T1Gait.MAX_CORRECTION), and the joint's range holds
+        T1GetUp fast = new T1GetUp(m, m, c.with("riseAnkleRateGain", 1.0), T1GaitConfig.getUpRecovery());
+        Map<String, JointCommand> last = null;
+        for (int i = 0; i < 10; i++) last = byActuator(fast.update(FRONT, i == 0 ? STILL : forward, a -> 0, i * DT));
+        assertEquals(Math.toDegrees(-0.3 + T1Gait.MAX_CORRECTION), last.get("lle5").qDeg(), 1e-9);
+        T1Motion toesUp = T1MotionLoader.parse("up", "up.motion", "#WEBOTS_MOTION,V1.0\nLeft_Ankle_Pitch\n00:00:020,p,0.3\n00:00:100,q,0.3\n");
+        T1GetUp ranged = new T1GetUp(toesUp, toesUp, c.with("riseFeedbackS", 1).with("riseAnkleRateGain", 1.0), T1GaitConfig.getUpRecovery());
+        ranged.update(FRONT, STILL, a -> 0, 0);
+        assertEquals(Math.toDegrees(0.35), byActuator(ranged.update(FRONT, forward, a -> 0, DT)).get("lle5").qDeg(), 1e-9,
+                "within the ankle's range (0.35 rad)");
+    }
+
+    @Test
     void refusesABadConfigWithItsField() {
+        var unknown = assertThrows(IllegalArgumentException.class, () -> T1GetUp.Config.DEFAULT.with("riseGain", 1));
+        assertTrue(unknown.getMessage().contains("riseGain") && unknown.getMessage().contains("riseAnkleRateGain"), unknown.getMessage());
+        var nan = assertThrows(IllegalArgumentException.class, () -> T1GetUp.Config.DEFAULT.with("riseHipRateGain", Double.NaN));
+        assertTrue(nan.getMessage().contains("riseHipRateGain"), nan.getMessage());
         var e = assertThrows(IllegalArgumentException.class, () -> T1GetUp.Config.DEFAULT.withRecoverS(-1));
         assertTrue(e.getMessage().contains("recoverS"), e.getMessage());
         e = assertThrows(IllegalArgumentException.class, () -> T1GetUp.Config.DEFAULT.withRecoverS(Double.NaN));
