@@ -427,6 +427,7 @@ public final class T1Bench {
         String side = lyingOn(p.quat());
         String placed = lay.startsWith("fall") ? "" : String.format(Locale.ROOT, "placed heading %.0f deg, roll %.1f deg", Math.toDegrees(yaw), Math.toDegrees(roll));
         long before = getUp.getUps();
+        getUp.reset();   // t starts at 0 again: a wait or a recovery left from the trial before would compare against its times
         double t = 0, upSince = -1, stillAt = -1;
         gait.feedback(0, 0, 0, 0);
         while (t < GIVE_UP_S) {
@@ -604,7 +605,7 @@ public final class T1Bench {
                             --seed N (20) for the placements); the agent's T1GetUp with
                             get_up_front|back.motion from --motions DIR (motions/t1) gets it up, then its recovery stand
                             (--recover S, T1GetUp.RECOVER_S; --recover-set FIELD=VALUE changes its T1GaitConfig.getUpRecovery());
-                            --getup-set FIELD=VALUE changes T1GetUp.Config.DEFAULT (e.g. riseFeedbackS=0.4, riseAnkleRateGain=0.05);
+                            --getup-set FIELD=VALUE changes T1GetUp.Config.DEFAULT (e.g. riseBackS=1.2, riseAnkleRateGain=0.05);
                             per get-up whether it stood, at the first try, and how long after lying still.""");
                     return;
                 }

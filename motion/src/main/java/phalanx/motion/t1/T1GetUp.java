@@ -23,21 +23,23 @@ public final class T1GetUp {
      * @param stillDegS         lying still: gyro below this, deg/s, on both tilt axes
      * @param maxWaitS          longest wait for lying still before the get-up starts anyway, s
      * @param recoverS          the recovery stand after the motion, s (0: none, the caller's gait at once)
-     * @param riseFeedbackS     the rise: the motion's last seconds, in which its ankle and hip pitch get the torso's pitch
-     *                          rate as feedback (0: none)
+     * @param riseFrontS        the rise of get_up_front: its last seconds, in which the motion's ankle and hip pitch get
+     *                          the torso's pitch rate as feedback (0: none)
+     * @param riseBackS         the same for get_up_back
      * @param riseAnkleRateGain in the rise, ankle pitch added per rad/s of forward torso pitch rate (toes down), rad
-     * @param riseHipRateGain   in the rise, hip pitch added per rad/s of forward torso pitch rate (hips open), rad
+     * @param riseHipRateGain   in the rise, hip pitch added per rad/s of forward torso pitch rate (positive: hips open), rad
      */
     public record Config(double fallenTiltDeg, double stillDegS, double maxWaitS, double recoverS,
-                         double riseFeedbackS, double riseAnkleRateGain, double riseHipRateGain) {
-        public static final Config DEFAULT = new Config(60, 30, 1.0, RECOVER_S, RISE_FEEDBACK_S, RISE_ANKLE_RATE_GAIN, RISE_HIP_RATE_GAIN);
+                         double riseFrontS, double riseBackS, double riseAnkleRateGain, double riseHipRateGain) {
+        public static final Config DEFAULT = new Config(60, 30, 1.0, RECOVER_S, RISE_FRONT_S, RISE_BACK_S, RISE_ANKLE_RATE_GAIN, RISE_HIP_RATE_GAIN);
 
         public Config {
             if (!(fallenTiltDeg > 0 && fallenTiltDeg < 180)) throw new IllegalArgumentException("fallenTiltDeg must be in (0, 180), got " + fallenTiltDeg);
             if (!(stillDegS > 0)) throw new IllegalArgumentException("stillDegS must be positive, got " + stillDegS);
             if (!(maxWaitS >= 0)) throw new IllegalArgumentException("maxWaitS must be at least 0, got " + maxWaitS);
             if (!(recoverS >= 0)) throw new IllegalArgumentException("recoverS must be at least 0, got " + recoverS);
-            if (!(riseFeedbackS >= 0)) throw new IllegalArgumentException("riseFeedbackS must be at least 0, got " + riseFeedbackS);
+            if (!(riseFrontS >= 0)) throw new IllegalArgumentException("riseFrontS must be at least 0, got " + riseFrontS);
+            if (!(riseBackS >= 0)) throw new IllegalArgumentException("riseBackS must be at least 0, got " + riseBackS);
             if (!Double.isFinite(riseAnkleRateGain)) throw new IllegalArgumentException("riseAnkleRateGain must be finite, got " + riseAnkleRateGain);
             if (!Double.isFinite(riseHipRateGain)) throw new IllegalArgumentException("riseHipRateGain must be finite, got " + riseHipRateGain);
         }
@@ -47,23 +49,23 @@ public final class T1GetUp {
         /** A copy with a named field changed (the bench's --getup-set name=value). */
         public Config with(String name, double v) {
             return switch (name) {
-                case "fallenTiltDeg" -> new Config(v, stillDegS, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
-                case "stillDegS" -> new Config(fallenTiltDeg, v, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
-                case "maxWaitS" -> new Config(fallenTiltDeg, stillDegS, v, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
-                case "recoverS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, v, riseFeedbackS, riseAnkleRateGain, riseHipRateGain);
-                case "riseFeedbackS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, v, riseAnkleRateGain, riseHipRateGain);
-                case "riseAnkleRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFeedbackS, v, riseHipRateGain);
-                case "riseHipRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, v);
-                default -> throw new IllegalArgumentException("no T1GetUp.Config field " + name
-                        + " (fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFeedbackS, riseAnkleRateGain, riseHipRateGain)");
+                case "fallenTiltDeg" -> new Config(v, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
+                case "stillDegS" -> new Config(fallenTiltDeg, v, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
+                case "maxWaitS" -> new Config(fallenTiltDeg, stillDegS, v, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
+                case "recoverS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, v, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
+                case "riseFrontS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, v, riseBackS, riseAnkleRateGain, riseHipRateGain);
+                case "riseBackS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, v, riseAnkleRateGain, riseHipRateGain);
+                case "riseAnkleRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, v, riseHipRateGain);
+                case "riseHipRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, v);
+                default -> throw new IllegalArgumentException("no T1GetUp.Config field " + name + " (fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain)");
             };
         }
     }
 
     /** See {@link Config#recoverS()}; measured in motion/README.md "T1 get-up". */
     static final double RECOVER_S = 1.0;
-    /** See {@link Config#riseFeedbackS()}, {@link Config#riseAnkleRateGain()}, {@link Config#riseHipRateGain()}: off until measured. */
-    static final double RISE_FEEDBACK_S = 0, RISE_ANKLE_RATE_GAIN = 0, RISE_HIP_RATE_GAIN = 0;
+    /** See {@link Config#riseFrontS()} and the others: off until measured. */
+    static final double RISE_FRONT_S = 0, RISE_BACK_S = 0, RISE_ANKLE_RATE_GAIN = 0, RISE_HIP_RATE_GAIN = 0;
 
     public enum State { UP, LYING, GETTING_UP, RECOVERING }
 
@@ -97,6 +99,16 @@ public final class T1GetUp {
 
     public State state() { return state; }
 
+    /**
+     * Forgets the state (up, nothing playing); the counts stay. For a caller whose clock starts again (the bench's
+     * trials), as the waits compare times.
+     */
+    public void reset() {
+        state = State.UP;
+        player.stop();
+        failed = false;
+    }
+
     /** Get-ups started so far. */
     public long getUps() { return getUps; }
 
@@ -129,7 +141,8 @@ public final class T1GetUp {
         }
         if (state == State.GETTING_UP) {
             List<JointCommand> out = player.next();
-            if (player.remainingS() < c.riseFeedbackS() - 1e-9 && gyroDegS != null) out = withRiseFeedback(out, Math.toRadians(gyroDegS[1]));
+            double rise = player.motion() == front ? c.riseFrontS() : c.riseBackS();
+            if (player.remainingS() < rise - 1e-9 && gyroDegS != null) out = withRiseFeedback(out, Math.toRadians(gyroDegS[1]));
             if (!player.active()) {
                 if (fallen(quat)) {
                     state = State.LYING;

@@ -82,7 +82,7 @@ class T1GetUpTest {
                 00:00:100,squat,-0.5,-0.5,-1.0,-1.0
                 00:00:200,rise,-0.3,-0.3,-0.5,-0.5
                 """);
-        T1GetUp.Config c = T1GetUp.Config.DEFAULT.with("riseFeedbackS", 0.1).with("riseAnkleRateGain", 0.05).with("riseHipRateGain", 0.02);
+        T1GetUp.Config c = T1GetUp.Config.DEFAULT.with("riseFrontS", 0.1).with("riseBackS", 0.5).with("riseAnkleRateGain", 0.05).with("riseHipRateGain", 0.02);
         T1GetUp g = new T1GetUp(m, m, c, T1GaitConfig.getUpRecovery());
         T1MotionPlayer plain = new T1MotionPlayer(DT, T1MotionPlayer.Gains.DEFAULT);
         plain.start(m, a -> 0);
@@ -96,13 +96,24 @@ class T1GetUpTest {
             assertEquals(ref.get("lle4").qDeg(), fb.get("lle4").qDeg(), 1e-9, "the knee as the motion has it");
             assertEquals(ref.get("lle5").dqDeg(), fb.get("lle5").dqDeg(), 1e-9, "the motion's velocity");
         }
+        // face up: get_up_back's window (here all of it) and not get_up_front's
+        T1Motion other = T1MotionLoader.parse("other", "other.motion", "#WEBOTS_MOTION,V1.0\nLeft_Ankle_Pitch\n00:00:200,p,0\n");
+        T1GetUp sides = new T1GetUp(other, m, c.with("riseFrontS", 0).with("riseBackS", 1), T1GaitConfig.getUpRecovery());
+        double[] faceUp = {Math.sqrt(0.5), 0, -Math.sqrt(0.5), 0};
+        sides.update(faceUp, STILL, a -> 0, 0);
+        assertEquals("rise", sides.playing());
+        T1MotionPlayer back = new T1MotionPlayer(DT, T1MotionPlayer.Gains.DEFAULT);
+        back.start(m, a -> 0);
+        back.next();
+        assertEquals(back.next().stream().filter(j -> j.actuator().equals("lle5")).findFirst().orElseThrow().qDeg() + Math.toDegrees(0.1),
+                byActuator(sides.update(faceUp, forward, a -> 0, DT)).get("lle5").qDeg(), 1e-9, "the back get-up's rise window");
         // a fast fall forward: the correction is bounded (T1Gait.MAX_CORRECTION), and the joint's range holds
         T1GetUp fast = new T1GetUp(m, m, c.with("riseAnkleRateGain", 1.0), T1GaitConfig.getUpRecovery());
         Map<String, JointCommand> last = null;
         for (int i = 0; i < 10; i++) last = byActuator(fast.update(FRONT, i == 0 ? STILL : forward, a -> 0, i * DT));
         assertEquals(Math.toDegrees(-0.3 + T1Gait.MAX_CORRECTION), last.get("lle5").qDeg(), 1e-9);
         T1Motion toesUp = T1MotionLoader.parse("up", "up.motion", "#WEBOTS_MOTION,V1.0\nLeft_Ankle_Pitch\n00:00:020,p,0.3\n00:00:100,q,0.3\n");
-        T1GetUp ranged = new T1GetUp(toesUp, toesUp, c.with("riseFeedbackS", 1).with("riseAnkleRateGain", 1.0), T1GaitConfig.getUpRecovery());
+        T1GetUp ranged = new T1GetUp(toesUp, toesUp, c.with("riseFrontS", 1).with("riseAnkleRateGain", 1.0), T1GaitConfig.getUpRecovery());
         ranged.update(FRONT, STILL, a -> 0, 0);
         assertEquals(Math.toDegrees(0.35), byActuator(ranged.update(FRONT, forward, a -> 0, DT)).get("lle5").qDeg(), 1e-9,
                 "within the ankle's range (0.35 rad)");
