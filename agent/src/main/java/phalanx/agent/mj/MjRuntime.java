@@ -57,7 +57,7 @@ public final class MjRuntime {
 
     /** motionDir: the folder of get_up_front.motion and get_up_back.motion; a bad file stops the start here. */
     public MjRuntime(String team, int unum, MjField field, TeamKey key, Path motionDir) throws MotionFileException {
-        this.getUp = T1GetUp.load(motionDir, T1GaitConfig.balanced().dt());
+        this.getUp = T1GetUp.load(motionDir);
         this.unum = unum;
         this.world = new MjWorld(team, field);
         this.behaviour = new MjBehaviour(field, unum, MjBehaviour.Config.DEFAULT);

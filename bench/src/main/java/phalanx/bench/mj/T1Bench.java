@@ -427,6 +427,7 @@ public final class T1Bench {
         String side = lyingOn(p.quat());
         String placed = lay.startsWith("fall") ? "" : String.format(Locale.ROOT, "placed heading %.0f deg, roll %.1f deg", Math.toDegrees(yaw), Math.toDegrees(roll));
         long before = getUp.getUps();
+        getUp.reset();   // t starts at 0 again: a wait or a recovery left from the trial before would compare against its times
         double t = 0, upSince = -1, stillAt = -1;
         gait.feedback(0, 0, 0, 0);
         while (t < GIVE_UP_S) {
@@ -437,7 +438,8 @@ public final class T1Bench {
             cycle(joints(g != null ? g : gait.stand()));
             t += 0.02;
             if (verbose && Math.round(t / 0.02) % KICK_TRACE_EVERY == 0) trace(g != null ? getUp.playing() : "stand", t);
-            boolean up = g == null && getUp.getUps() > before && tiltDeg(p.quat()) < UPRIGHT_TILT_DEG;
+            // the recovery stand after the motion counts as standing (it ends in the agent's stand, a fall in it is a failure)
+            boolean up = (g == null || getUp.state() == T1GetUp.State.RECOVERING) && getUp.getUps() > before && tiltDeg(p.quat()) < UPRIGHT_TILT_DEG;
             if (!up) upSince = -1;
             else if (upSince < 0) upSince = t;
             if (upSince >= 0 && t - upSince >= STAND_AFTER_S)
@@ -499,6 +501,8 @@ public final class T1Bench {
         int getups = 10;
         long seed = 20;
         Path motionDir = Path.of("motions", "t1");
+        T1GetUp.Config getUpConfig = T1GetUp.Config.DEFAULT;
+        T1GaitConfig recovery = T1GaitConfig.getUpRecovery();
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--trial" -> trial = args[++i];
@@ -565,6 +569,17 @@ public final class T1Bench {
                 case "--getups" -> getups = Integer.parseInt(args[++i]);
                 case "--seed" -> seed = Long.parseLong(args[++i]);
                 case "--motions" -> motionDir = Path.of(args[++i]);
+                case "--recover" -> getUpConfig = getUpConfig.withRecoverS(Double.parseDouble(args[++i]));
+                case "--getup-set" -> {
+                    String[] kv = fieldValue(args[i], args[i + 1]);
+                    getUpConfig = getUpConfig.with(kv[0], Double.parseDouble(kv[1]));
+                    i++;
+                }
+                case "--recover-set" -> {
+                    String[] kv = fieldValue(args[i], args[i + 1]);
+                    recovery = recovery.with(kv[0], Double.parseDouble(kv[1]));
+                    i++;
+                }
                 case "--verbose" -> verbose = true;
                 case "-h", "--help" -> {
                     System.out.println("""
@@ -588,8 +603,10 @@ public final class T1Bench {
                             getup (not in all): --getups N (10) times laid down by the monitor, --lying front|back|both
                             (both: alternating), or fallen by itself, --lying fall-front|fall-back (a comma list: in turn;
                             --seed N (20) for the placements); the agent's T1GetUp with
-                            get_up_front|back.motion from --motions DIR (motions/t1) gets it up; per get-up whether it stood,
-                            at the first try, and how long after lying still.""");
+                            get_up_front|back.motion from --motions DIR (motions/t1) gets it up, then its recovery stand
+                            (--recover S, T1GetUp.RECOVER_S; --recover-set FIELD=VALUE changes its T1GaitConfig.getUpRecovery());
+                            --getup-set FIELD=VALUE changes T1GetUp.Config.DEFAULT (e.g. riseBackS=1.2, riseAnkleRateGain=0.05);
+                            per get-up whether it stood, at the first try, and how long after lying still.""");
                     return;
                 }
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
@@ -629,7 +646,7 @@ public final class T1Bench {
                     for (String t : trials) {
                         T1Gait gait = blend != null ? new T1Gait(blend, config) : new T1Gait(config);
                         if (t.equals("getup")) {
-                            b.getUpTrial(gait, T1GetUp.load(motionDir, 0.02), getups, lying, seed);
+                            b.getUpTrial(gait, T1GetUp.load(motionDir, getUpConfig, recovery), getups, lying, seed);
                             continue;
                         }
                         if (t.equals("kick")) {

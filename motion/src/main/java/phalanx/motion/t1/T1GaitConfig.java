@@ -177,6 +177,14 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
         return balanced().with("strideScale", 1.25);
     }
 
+    /**
+     * The recovery stand after a get-up ({@link T1GetUp}): {@link #balanced()}'s stand pose (where the get-up motions
+     * end) with its torso feedback changed for the landing of the get-ups' leap (motion/README.md "T1 get-up").
+     */
+    public static T1GaitConfig getUpRecovery() {
+        return balanced();
+    }
+
     /** A copy with a named field changed (for the bench's --set name=value). */
     public T1GaitConfig with(String name, double value) {
         java.lang.reflect.RecordComponent[] rc = T1GaitConfig.class.getRecordComponents();

@@ -60,6 +60,9 @@ public final class T1MotionPlayer {
 
     public void stop() { active = false; }
 
+    /** Seconds of the motion still to play after the last {@link #next()} (0 when done). */
+    public double remainingS() { return active ? Math.max(0, motion.seconds() - t) : 0; }
+
     /** The motion being played (null before the first start). */
     public T1Motion motion() { return motion; }
 
