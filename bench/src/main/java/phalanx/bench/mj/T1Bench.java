@@ -485,7 +485,22 @@ public final class T1Bench {
         return n == 0 ? Double.NaN : n % 2 == 1 ? s.get(n / 2) : (s.get(n / 2 - 1) + s.get(n / 2)) / 2;
     }
 
+    /** A bad option, with its name: main prints it and exits with status 2. */
+    static final class BadOption extends IllegalArgumentException {
+        BadOption(String why) { super(why); }
+    }
+
     public static void main(String[] args) throws Exception {
+        try {
+            run(args);
+        } catch (BadOption e) {
+            System.err.println("t1-bench: " + e.getMessage() + " (scripts/phalanx bench t1 --help)");
+            System.exit(2);
+        }
+    }
+
+    /** The bench with these options; a bad option throws {@link BadOption} before any server starts. */
+    static void run(String[] args) throws Exception {
         String trial = "all";
         double seconds = -1, speed = 0.6, turn = 60;
         int port = 4100;
@@ -504,112 +519,121 @@ public final class T1Bench {
         T1GetUp.Config getUpConfig = T1GetUp.Config.DEFAULT;
         T1GaitConfig recovery = T1GaitConfig.getUpRecovery();
         for (int i = 0; i < args.length; i++) {
-            switch (args[i]) {
-                case "--trial" -> trial = args[++i];
-                case "--seconds" -> seconds = Double.parseDouble(args[++i]);
-                case "--speed" -> speed = Double.parseDouble(args[++i]);
-                case "--turn" -> turn = Double.parseDouble(args[++i]);
-                case "--port" -> port = Integer.parseInt(args[++i]);
-                case "--preset" -> config = switch (args[++i]) {
-                    case "walk" -> T1GaitConfig.defaults();
-                    case "balanced" -> T1GaitConfig.balanced();
-                    case "turn" -> T1GaitConfig.turnInPlace();
-                    case "blend" -> {
-                        blend = T1GaitConfig.Blend.agent();
-                        yield T1GaitConfig.balanced();   // the agent's stand (and kick) config
+            String option = args[i];
+            try {
+                switch (args[i]) {
+                    case "--trial" -> trial = args[++i];
+                    case "--seconds" -> seconds = Double.parseDouble(args[++i]);
+                    case "--speed" -> speed = Double.parseDouble(args[++i]);
+                    case "--turn" -> turn = Double.parseDouble(args[++i]);
+                    case "--port" -> port = Integer.parseInt(args[++i]);
+                    case "--preset" -> config = switch (args[++i]) {
+                        case "walk" -> T1GaitConfig.defaults();
+                        case "balanced" -> T1GaitConfig.balanced();
+                        case "turn" -> T1GaitConfig.turnInPlace();
+                        case "blend" -> {
+                            blend = T1GaitConfig.Blend.agent();
+                            yield T1GaitConfig.balanced();   // the agent's stand (and kick) config
+                        }
+                        default -> throw new IllegalArgumentException("--preset walk|balanced|turn|blend");
+                    };
+                    case "--walk-set", "--turn-set" -> {
+                        if (blend == null) throw new IllegalArgumentException(args[i] + " after --preset blend");
+                        String[] kv = fieldValue(args[i], args[i + 1]);
+                        double v = Double.parseDouble(kv[1]);
+                        blend = args[i].equals("--walk-set") ? blend.withWalk(blend.walk().with(kv[0], v)) : blend.withTurn(blend.turn().with(kv[0], v));
+                        i++;
                     }
-                    default -> throw new IllegalArgumentException("--preset walk|balanced|turn|blend");
-                };
-                case "--walk-set", "--turn-set" -> {
-                    if (blend == null) throw new IllegalArgumentException(args[i] + " after --preset blend");
-                    String[] kv = fieldValue(args[i], args[i + 1]);
-                    double v = Double.parseDouble(kv[1]);
-                    blend = args[i].equals("--walk-set") ? blend.withWalk(blend.walk().with(kv[0], v)) : blend.withTurn(blend.turn().with(kv[0], v));
-                    i++;
+                    case "--blend-rate" -> {
+                        if (blend == null) throw new IllegalArgumentException("--blend-rate after --preset blend");
+                        blend = blend.withRate(Double.parseDouble(args[++i]));
+                    }
+                    case "--turn-at-speed" -> {
+                        if (blend == null) throw new IllegalArgumentException("--turn-at-speed after --preset blend");
+                        String[] v = args[++i].split(",");
+                        if (v.length != 2) throw new IllegalArgumentException("--turn-at-speed DEG_S,M_S, got '" + args[i] + "'");
+                        blend = blend.withTurnAtSpeed(Double.parseDouble(v[0]), Double.parseDouble(v[1]));
+                    }
+                    case "--decel" -> {
+                        if (blend == null) throw new IllegalArgumentException("--decel after --preset blend");
+                        blend = blend.withDecel(Double.parseDouble(args[++i]));
+                    }
+                    case "--phase" -> {
+                        phase = Double.parseDouble(args[++i]);
+                        if (!(phase >= 0.02)) throw new IllegalArgumentException("--phase S must be at least one cycle (0.02 s), got " + args[i]);
+                    }
+                    case "--set" -> {
+                        String[] kv = args[++i].split("=", 2);
+                        config = config.with(kv[0], Double.parseDouble(kv[1]));
+                    }
+                    case "--kick" -> {
+                        String[] kv = args[++i].split("=", 2);
+                        kickConfig = kickConfig.with(kv[0], Double.parseDouble(kv[1]));
+                    }
+                    case "--kicks" -> kicks = Integer.parseInt(args[++i]);
+                    case "--ball-jitter" -> jitter = Double.parseDouble(args[++i]);
+                    case "--foot" -> {
+                        foot = args[++i];
+                        if (!foot.equals("left") && !foot.equals("right") && !foot.equals("both"))
+                            throw new IllegalArgumentException("--foot left|right|both");
+                    }
+                    case "--lying" -> {
+                        lying = args[++i];
+                        for (String l : lying.split(","))
+                            if (!List.of("front", "back", "both", "fall-front", "fall-back").contains(l))
+                                throw new IllegalArgumentException("--lying front|back|both|fall-front|fall-back, or a comma list of them");
+                    }
+                    case "--getups" -> getups = Integer.parseInt(args[++i]);
+                    case "--seed" -> seed = Long.parseLong(args[++i]);
+                    case "--motions" -> motionDir = Path.of(args[++i]);
+                    case "--recover" -> getUpConfig = getUpConfig.withRecoverS(Double.parseDouble(args[++i]));
+                    case "--getup-set" -> {
+                        String[] kv = fieldValue(args[i], args[i + 1]);
+                        getUpConfig = getUpConfig.with(kv[0], Double.parseDouble(kv[1]));
+                        i++;
+                    }
+                    case "--recover-set" -> {
+                        String[] kv = fieldValue(args[i], args[i + 1]);
+                        recovery = recovery.with(kv[0], Double.parseDouble(kv[1]));
+                        i++;
+                    }
+                    case "--verbose" -> verbose = true;
+                    case "-h", "--help" -> {
+                        System.out.println("""
+                                usage: scripts/phalanx bench t1 [--trial stand|walk|turn|walkturn|kick|getup|all] [--seconds S] [--speed M_PER_S]
+                                       [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn|blend] [--set CONFIG_FIELD=VALUE]...
+                                       [--walk-set FIELD=VALUE]... [--turn-set FIELD=VALUE]... [--blend-rate PER_S] [--turn-at-speed DEG_S,M_S] [--decel M_S2] [--phase S]
+                                       [--kicks N] [--foot left|right|both] [--ball-jitter M] [--kick KICK_FIELD=VALUE]... [--verbose]
+                                Starts its own rcssservermj (ports P, P+1; default 4100) and runs the T1 gait's trials:
+                                stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.
+                                --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.
+                                --preset blend: T1GaitConfig.Blend.agent() (balancedWalk() walking, turnInPlace() turning, blended
+                                by the command; balanced() standing; the agent itself walks balanced()): --walk-set/--turn-set change its
+                                presets, --blend-rate its rate (share per s), --turn-at-speed its turn limit at and above a speed, --decel its slowing down,
+                                --set its stand config.
+                                walkturn (not in all): --phase S (5) walking at --speed, --phase S turning at --turn, in turn,
+                                --seconds (60); the walking phases' speed, the turning phases' rate, falls.
+                                kick (not in all): --kicks N (10) kicks with --foot (right; both alternates), the ball placed in
+                                front of the foot (up to --ball-jitter M off it in x and y, seeded); per kick the ball's travel,
+                                its direction error and a fall; --kick changes
+                                T1KickConfig.defaults(), e.g. --kick swing.kickX=0.25 or --kick legKp=250.
+                                getup (not in all): --getups N (10) times laid down by the monitor, --lying front|back|both
+                                (both: alternating), or fallen by itself, --lying fall-front|fall-back (a comma list: in turn;
+                                --seed N (20) for the placements); the agent's T1GetUp with
+                                get_up_front|back.motion from --motions DIR (motions/t1) gets it up, then its recovery stand
+                                (--recover S, T1GetUp.RECOVER_S; --recover-set FIELD=VALUE changes its T1GaitConfig.getUpRecovery());
+                                --getup-set FIELD=VALUE changes T1GetUp.Config.DEFAULT (e.g. riseBackS=1.2, riseAnkleRateGain=0.05);
+                                per get-up whether it stood, at the first try, and how long after lying still.""");
+                        return;
+                    }
+                    default -> throw new IllegalArgumentException("unknown option " + args[i]);
                 }
-                case "--blend-rate" -> {
-                    if (blend == null) throw new IllegalArgumentException("--blend-rate after --preset blend");
-                    blend = blend.withRate(Double.parseDouble(args[++i]));
-                }
-                case "--turn-at-speed" -> {
-                    if (blend == null) throw new IllegalArgumentException("--turn-at-speed after --preset blend");
-                    String[] v = args[++i].split(",");
-                    if (v.length != 2) throw new IllegalArgumentException("--turn-at-speed DEG_S,M_S, got '" + args[i] + "'");
-                    blend = blend.withTurnAtSpeed(Double.parseDouble(v[0]), Double.parseDouble(v[1]));
-                }
-                case "--decel" -> {
-                    if (blend == null) throw new IllegalArgumentException("--decel after --preset blend");
-                    blend = blend.withDecel(Double.parseDouble(args[++i]));
-                }
-                case "--phase" -> {
-                    phase = Double.parseDouble(args[++i]);
-                    if (!(phase >= 0.02)) throw new IllegalArgumentException("--phase S must be at least one cycle (0.02 s), got " + args[i]);
-                }
-                case "--set" -> {
-                    String[] kv = args[++i].split("=", 2);
-                    config = config.with(kv[0], Double.parseDouble(kv[1]));
-                }
-                case "--kick" -> {
-                    String[] kv = args[++i].split("=", 2);
-                    kickConfig = kickConfig.with(kv[0], Double.parseDouble(kv[1]));
-                }
-                case "--kicks" -> kicks = Integer.parseInt(args[++i]);
-                case "--ball-jitter" -> jitter = Double.parseDouble(args[++i]);
-                case "--foot" -> {
-                    foot = args[++i];
-                    if (!foot.equals("left") && !foot.equals("right") && !foot.equals("both"))
-                        throw new IllegalArgumentException("--foot left|right|both");
-                }
-                case "--lying" -> {
-                    lying = args[++i];
-                    for (String l : lying.split(","))
-                        if (!List.of("front", "back", "both", "fall-front", "fall-back").contains(l))
-                            throw new IllegalArgumentException("--lying front|back|both|fall-front|fall-back, or a comma list of them");
-                }
-                case "--getups" -> getups = Integer.parseInt(args[++i]);
-                case "--seed" -> seed = Long.parseLong(args[++i]);
-                case "--motions" -> motionDir = Path.of(args[++i]);
-                case "--recover" -> getUpConfig = getUpConfig.withRecoverS(Double.parseDouble(args[++i]));
-                case "--getup-set" -> {
-                    String[] kv = fieldValue(args[i], args[i + 1]);
-                    getUpConfig = getUpConfig.with(kv[0], Double.parseDouble(kv[1]));
-                    i++;
-                }
-                case "--recover-set" -> {
-                    String[] kv = fieldValue(args[i], args[i + 1]);
-                    recovery = recovery.with(kv[0], Double.parseDouble(kv[1]));
-                    i++;
-                }
-                case "--verbose" -> verbose = true;
-                case "-h", "--help" -> {
-                    System.out.println("""
-                            usage: scripts/phalanx bench t1 [--trial stand|walk|turn|walkturn|kick|getup|all] [--seconds S] [--speed M_PER_S]
-                                   [--turn DEG_PER_S] [--port P] [--preset walk|balanced|turn|blend] [--set CONFIG_FIELD=VALUE]...
-                                   [--walk-set FIELD=VALUE]... [--turn-set FIELD=VALUE]... [--blend-rate PER_S] [--turn-at-speed DEG_S,M_S] [--decel M_S2] [--phase S]
-                                   [--kicks N] [--foot left|right|both] [--ball-jitter M] [--kick KICK_FIELD=VALUE]... [--verbose]
-                            Starts its own rcssservermj (ports P, P+1; default 4100) and runs the T1 gait's trials:
-                            stand 30 s, walk 60 s at --speed (0.6), turn 20 s at --turn (60). Defaults per trial.
-                            --preset: T1GaitConfig.defaults() (walk, the default), balanced() or turnInPlace(); --set after it.
-                            --preset blend: T1GaitConfig.Blend.agent() (balancedWalk() walking, turnInPlace() turning, blended
-                            by the command; balanced() standing; the agent itself walks balanced()): --walk-set/--turn-set change its
-                            presets, --blend-rate its rate (share per s), --turn-at-speed its turn limit at and above a speed, --decel its slowing down,
-                            --set its stand config.
-                            walkturn (not in all): --phase S (5) walking at --speed, --phase S turning at --turn, in turn,
-                            --seconds (60); the walking phases' speed, the turning phases' rate, falls.
-                            kick (not in all): --kicks N (10) kicks with --foot (right; both alternates), the ball placed in
-                            front of the foot (up to --ball-jitter M off it in x and y, seeded); per kick the ball's travel,
-                            its direction error and a fall; --kick changes
-                            T1KickConfig.defaults(), e.g. --kick swing.kickX=0.25 or --kick legKp=250.
-                            getup (not in all): --getups N (10) times laid down by the monitor, --lying front|back|both
-                            (both: alternating), or fallen by itself, --lying fall-front|fall-back (a comma list: in turn;
-                            --seed N (20) for the placements); the agent's T1GetUp with
-                            get_up_front|back.motion from --motions DIR (motions/t1) gets it up, then its recovery stand
-                            (--recover S, T1GetUp.RECOVER_S; --recover-set FIELD=VALUE changes its T1GaitConfig.getUpRecovery());
-                            --getup-set FIELD=VALUE changes T1GetUp.Config.DEFAULT (e.g. riseBackS=1.2, riseAnkleRateGain=0.05);
-                            per get-up whether it stood, at the first try, and how long after lying still.""");
-                    return;
-                }
-                default -> throw new IllegalArgumentException("unknown option " + args[i]);
+            } catch (NumberFormatException e) {
+                throw new BadOption(option + " needs a number, got '" + (i < args.length ? args[i] : "") + "'");
+            } catch (ArrayIndexOutOfBoundsException e) {
+                throw new BadOption(option + " needs a value");
+            } catch (IllegalArgumentException e) {
+                throw new BadOption(e.getMessage());
             }
         }
         Optional<Path> exe = MjServerProcess.find(System.getenv(), Path.of(System.getProperty("user.dir")));

@@ -9,23 +9,34 @@ class T1BenchOptionsTest {
     @Test
     void aBadLyingOrSeedIsRefusedWithWhatIsAllowed() {
         IllegalArgumentException lying = assertThrows(IllegalArgumentException.class,
-                () -> T1Bench.main(new String[]{"--trial", "getup", "--lying", "front,sideways"}));
+                () -> T1Bench.run(new String[]{"--trial", "getup", "--lying", "front,sideways"}));
         assertTrue(lying.getMessage().contains("--lying front|back|both|fall-front|fall-back"), lying.getMessage());
-        assertThrows(NumberFormatException.class, () -> T1Bench.main(new String[]{"--trial", "getup", "--seed", "x"}));
+        IllegalArgumentException seed = assertThrows(IllegalArgumentException.class, () -> T1Bench.run(new String[]{"--trial", "getup", "--seed", "x"}));
+        assertEquals("--seed needs a number, got 'x'", seed.getMessage());
+    }
+
+    @Test
+    void theGetUpOptionsAreRefusedByNameAndAMissingValueToo() {
+        for (String[] bad : new String[][]{{"--recover", "x"}, {"--getup-set", "foo=1"}, {"--recover-set", "footX"}, {"--getup-set", "recoverS=-1"},
+                {"--getups"}}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> T1Bench.run(bad), String.join(" ", bad));
+            assertTrue(e.getMessage().contains(bad[0]) || e.getMessage().contains("foo") || e.getMessage().contains("recoverS"), e.getMessage());
+        }
+        assertEquals("--getups needs a value", assertThrows(IllegalArgumentException.class, () -> T1Bench.run(new String[]{"--getups"})).getMessage());
     }
 
     @Test
     void badBlendOptionsAreRefusedWithWhatIsExpected() {
-        IllegalArgumentException before = assertThrows(IllegalArgumentException.class, () -> T1Bench.main(new String[]{"--walk-set", "sway=0.1"}));
+        IllegalArgumentException before = assertThrows(IllegalArgumentException.class, () -> T1Bench.run(new String[]{"--walk-set", "sway=0.1"}));
         assertTrue(before.getMessage().contains("after --preset blend"), before.getMessage());
         IllegalArgumentException noValue = assertThrows(IllegalArgumentException.class,
-                () -> T1Bench.main(new String[]{"--preset", "blend", "--turn-set", "sway"}));
+                () -> T1Bench.run(new String[]{"--preset", "blend", "--turn-set", "sway"}));
         assertTrue(noValue.getMessage().contains("--turn-set FIELD=VALUE, got 'sway'"), noValue.getMessage());
         IllegalArgumentException pair = assertThrows(IllegalArgumentException.class,
-                () -> T1Bench.main(new String[]{"--preset", "blend", "--turn-at-speed", "10"}));
+                () -> T1Bench.run(new String[]{"--preset", "blend", "--turn-at-speed", "10"}));
         assertTrue(pair.getMessage().contains("--turn-at-speed DEG_S,M_S"), pair.getMessage());
         IllegalArgumentException phase = assertThrows(IllegalArgumentException.class,
-                () -> T1Bench.main(new String[]{"--trial", "walkturn", "--phase", "0"}));
+                () -> T1Bench.run(new String[]{"--trial", "walkturn", "--phase", "0"}));
         assertTrue(phase.getMessage().contains("--phase S must be at least one cycle"), phase.getMessage());
     }
 
