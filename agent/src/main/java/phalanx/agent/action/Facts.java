@@ -76,10 +76,14 @@ public final class Facts {
                                      double radius, AgentConfig c) {
         if (players == null || point == null) return false;
         for (PlayerBelief p : players) {
-            if (p == null || p.global() == null || !(now - p.time() <= c.beliefs().playerMemorySeconds())) continue;
-            if (p.global().distanceTo(point) <= radius) return true;
+            if (seen(p, now, c) && p.global().distanceTo(point) <= radius) return true;
         }
         return false;
+    }
+
+    /** A player with a field position, seen within the player memory time. */
+    public static boolean seen(PlayerBelief p, double now, AgentConfig c) {
+        return p != null && p.global() != null && now - p.time() <= c.beliefs().playerMemorySeconds();
     }
 
     /**

@@ -182,7 +182,7 @@ public final class OnBall implements Action {
         if (ball == null || Double.isNaN(dir) || s.belief() == null) return false;
         Vector2 u = Vector2.polar(1, dir);
         for (var p : s.belief().opponents()) {
-            if (p == null || p.global() == null || !(s.belief().time() - p.time() <= config.beliefs().playerMemorySeconds())) continue;
+            if (!Facts.seen(p, s.belief().time(), config)) continue;
             Vector2 v = p.global().minus(ball);
             double along = v.dot(u), across = Math.abs(v.x() * u.y() - v.y() * u.x());
             if (along > -LANE_BEHIND && along < LANE_LENGTH && across < LANE_HALF_WIDTH) return false;

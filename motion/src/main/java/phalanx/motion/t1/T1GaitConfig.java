@@ -178,29 +178,13 @@ public record T1GaitConfig(double waistX, double waistZ, double hipY, double hip
     }
 
     /**
-     * The recovery stand after a get-up ({@link T1GetUp}): {@link #balanced()}'s stand pose (where the get-up motions
-     * end) with its torso feedback changed for the landing of the get-ups' leap (motion/README.md "T1 get-up").
+     * The recovery stand after a get-up ({@link T1GetUp}): {@link #balanced()}'s stand pose, where the get-up motions
+     * end, as it is; the two changes of its feedback measured for the landing made it worse (motion/README.md "First try").
      */
     public static T1GaitConfig getUpRecovery() {
         return balanced();
     }
 
     /** A copy with a named field changed (for the bench's --set name=value). */
-    public T1GaitConfig with(String name, double value) {
-        java.lang.reflect.RecordComponent[] rc = T1GaitConfig.class.getRecordComponents();
-        Object[] args = new Object[rc.length];
-        Class<?>[] types = new Class<?>[rc.length];
-        boolean found = false;
-        try {
-            for (int i = 0; i < rc.length; i++) {
-                types[i] = double.class;
-                args[i] = rc[i].getName().equals(name) ? (Object) value : rc[i].getAccessor().invoke(this);
-                found |= rc[i].getName().equals(name);
-            }
-            if (!found) throw new IllegalArgumentException("no T1GaitConfig field " + name);
-            return T1GaitConfig.class.getDeclaredConstructor(types).newInstance(args);
-        } catch (ReflectiveOperationException e) {
-            throw new IllegalStateException(e);
-        }
-    }
+    public T1GaitConfig with(String name, double value) { return phalanx.motion.RecordFields.withDouble(this, name, value); }
 }

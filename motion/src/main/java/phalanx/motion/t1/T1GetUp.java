@@ -47,19 +47,7 @@ public final class T1GetUp {
         public Config withRecoverS(double s) { return with("recoverS", s); }
 
         /** A copy with a named field changed (the bench's --getup-set name=value). */
-        public Config with(String name, double v) {
-            return switch (name) {
-                case "fallenTiltDeg" -> new Config(v, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
-                case "stillDegS" -> new Config(fallenTiltDeg, v, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
-                case "maxWaitS" -> new Config(fallenTiltDeg, stillDegS, v, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
-                case "recoverS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, v, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain);
-                case "riseFrontS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, v, riseBackS, riseAnkleRateGain, riseHipRateGain);
-                case "riseBackS" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, v, riseAnkleRateGain, riseHipRateGain);
-                case "riseAnkleRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, v, riseHipRateGain);
-                case "riseHipRateGain" -> new Config(fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, v);
-                default -> throw new IllegalArgumentException("no T1GetUp.Config field " + name + " (fallenTiltDeg, stillDegS, maxWaitS, recoverS, riseFrontS, riseBackS, riseAnkleRateGain, riseHipRateGain)");
-            };
-        }
+        public Config with(String name, double v) { return phalanx.motion.RecordFields.withDouble(this, name, v); }
     }
 
     /** See {@link Config#recoverS()}; measured in motion/README.md "T1 get-up". */
@@ -127,9 +115,7 @@ public final class T1GetUp {
     public List<JointCommand> update(double[] quat, double[] gyroDegS, ToDoubleFunction<String> measuredDeg, double time) {
         if (state == State.RECOVERING) {
             if (fallen(quat)) {
-                state = State.LYING;
-                lyingSince = time;
-                failed = true;
+                lieDown(time);
             } else if (time >= recoverUntil - 1e-9) {
                 state = State.UP;
                 return null;
@@ -145,9 +131,7 @@ public final class T1GetUp {
             if (player.remainingS() < rise - 1e-9 && gyroDegS != null) out = withRiseFeedback(out, Math.toRadians(gyroDegS[1]));
             if (!player.active()) {
                 if (fallen(quat)) {
-                    state = State.LYING;
-                    lyingSince = time;
-                    failed = true;
+                    lieDown(time);
                 } else if (c.recoverS() > 0) {
                     state = State.RECOVERING;
                     recoverUntil = time + c.recoverS();
@@ -193,6 +177,13 @@ public final class T1GetUp {
 
     private static double clamp(double rad) {
         return Math.max(-T1Gait.MAX_CORRECTION, Math.min(T1Gait.MAX_CORRECTION, rad));
+    }
+
+    /** Still down after a get-up or in its recovery stand: a failed try, lying since {@code time}. */
+    private void lieDown(double time) {
+        state = State.LYING;
+        lyingSince = time;
+        failed = true;
     }
 
     boolean fallen(double[] q) {
